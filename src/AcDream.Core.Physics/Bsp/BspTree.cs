@@ -1,0 +1,250 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>One node of a physics BSP tree, as given by a caller or a compiler (see <see cref="BspTree.Create"/>).</summary>
+public sealed class BspNodeData
+{
+    /// <summary>True for a leaf; false for an internal node with a split plane.</summary>
+    public bool IsLeaf { get; init; }
+    /// <summary>Internal nodes: the split plane (front = positive side). The normal is normalized on load.</summary>
+    public Plane SplitPlane { get; init; }
+    /// <summary>Internal nodes: the index of the front (positive) child, or -1 for none.</summary>
+    public int Front { get; init; } = -1;
+    /// <summary>Internal nodes: the index of the back (negative) child, or -1 for none.</summary>
+    public int Back { get; init; } = -1;
+    /// <summary>Leaves: the leaf is inside the solid.</summary>
+    public bool Solid { get; init; }
+    /// <summary>The polygons (indices into the tree's polygon list) stored at this node; physics trees keep them in leaves.</summary>
+    public IReadOnlyList<int> Polygons { get; init; } = Array.Empty<int>();
+    /// <summary>The node's bounding sphere; when null it is computed from the polygons below the node.</summary>
+    public Sphere? Bounds { get; init; }
+}
+
+/// <summary>A node of a <see cref="BspTree"/> in its flat, validated form.</summary>
+public readonly struct BspNode
+{
+    /// <summary>Internal nodes: the unit split plane.</summary>
+    public readonly Plane SplitPlane;
+    /// <summary>The bounding sphere of everything below the node.</summary>
+    public readonly Sphere Bounds;
+    /// <summary>Front child index or -1.</summary>
+    public readonly int Front;
+    /// <summary>Back child index or -1.</summary>
+    public readonly int Back;
+    /// <summary>First entry of this node's polygons in <see cref="BspTree.PolygonIndices"/>.</summary>
+    public readonly int FirstPolygon;
+    /// <summary>How many polygons this node holds.</summary>
+    public readonly int PolygonCount;
+    /// <summary>True for a leaf.</summary>
+    public readonly bool IsLeaf;
+    /// <summary>Leaves: inside the solid.</summary>
+    public readonly bool Solid;
+
+    internal BspNode(Plane plane, Sphere bounds, int front, int back, int firstPolygon, int polygonCount, bool isLeaf, bool solid)
+    {
+        SplitPlane = plane;
+        Bounds = bounds;
+        Front = front;
+        Back = back;
+        FirstPolygon = firstPolygon;
+        PolygonCount = polygonCount;
+        IsLeaf = isLeaf;
+        Solid = solid;
+    }
+}
+
+/// <summary>
+/// A physics BSP tree (retail BSPTREE of a GfxObj or a cell) in a flat layout: nodes in one array, root
+/// at index 0, children by index, each node's polygons as a range of <see cref="PolygonIndices"/>.
+/// Immutable and validated on creation, so queries never meet a broken index.
+/// Queries live in <see cref="BspQuery"/>.
+/// </summary>
+public sealed class BspTree
+{
+    private readonly BspNode[] _nodes;
+    private readonly Polygon[] _polygons;
+    private readonly int[] _polygonIndices;
+
+    private BspTree(BspNode[] nodes, Polygon[] polygons, int[] polygonIndices)
+    {
+        _nodes = nodes;
+        _polygons = polygons;
+        _polygonIndices = polygonIndices;
+    }
+
+    /// <summary>The nodes; index 0 is the root.</summary>
+    public ReadOnlySpan<BspNode> Nodes => _nodes;
+    /// <summary>The polygons the nodes refer to.</summary>
+    public ReadOnlySpan<Polygon> Polygons => _polygons;
+    /// <summary>The polygon index lists of all nodes, concatenated.</summary>
+    public ReadOnlySpan<int> PolygonIndices => _polygonIndices;
+    /// <summary>The root's bounding sphere (retail BSPTREE::GetSphere).</summary>
+    public Sphere Bounds => _nodes[0].Bounds;
+
+    internal BspNode[] NodeArray => _nodes;
+    internal Polygon[] PolygonArray => _polygons;
+    internal int[] IndexArray => _polygonIndices;
+
+    /// <summary>
+    /// Builds a tree from explicit nodes (retail trees come prebuilt and their order matters, so the
+    /// order is kept as given). Validates everything: the root is node 0, every child index is in range,
+    /// no node is reached twice (no cycles, no sharing), every node is reachable, polygon indices are in
+    /// range, planes and bounds are finite. Errors name the node and field.
+    /// </summary>
+    public static BspTree Create(IReadOnlyList<Polygon> polygons, IReadOnlyList<BspNodeData> nodes, string name = "bsp")
+    {
+        ArgumentNullException.ThrowIfNull(polygons);
+        ArgumentNullException.ThrowIfNull(nodes);
+        if (nodes.Count == 0)
+            throw new ArgumentException($"{name}.nodes: a BSP tree needs at least one node.", nameof(nodes));
+        for (int p = 0; p < polygons.Count; p++)
+            if (polygons[p] is null)
+                throw new ArgumentException($"{name}.polygons[{p}]: is null.", nameof(polygons));
+
+        var parent = new int[nodes.Count];
+        Array.Fill(parent, -2);
+        parent[0] = -1;
+        var order = new Stack<int>();
+        order.Push(0);
+        int visited = 0;
+        while (order.Count > 0)
+        {
+            int i = order.Pop();
+            visited++;
+            var node = nodes[i] ?? throw new ArgumentException($"{name}.nodes[{i}]: is null.", nameof(nodes));
+            if (node.IsLeaf)
+                continue;
+            CheckPlane(node.SplitPlane, $"{name}.nodes[{i}].splitPlane");
+            foreach (var (child, field) in new[] { (node.Front, "front"), (node.Back, "back") })
+            {
+                if (child == -1)
+                    continue;
+                if (child < 0 || child >= nodes.Count)
+                    throw new ArgumentException($"{name}.nodes[{i}].{field}: child index {child} is out of range 0..{nodes.Count - 1}.", nameof(nodes));
+                if (parent[child] != -2)
+                    throw new ArgumentException($"{name}.nodes[{i}].{field}: node {child} is referenced more than once (a cycle or a shared subtree).", nameof(nodes));
+                parent[child] = i;
+                order.Push(child);
+            }
+        }
+        if (visited != nodes.Count)
+        {
+            int orphan = Array.IndexOf(parent, -2);
+            throw new ArgumentException($"{name}.nodes[{orphan}]: is not reachable from the root (node 0).", nameof(nodes));
+        }
+
+        var flat = new BspNode[nodes.Count];
+        var indices = new List<int>();
+        var polygonArray = new Polygon[polygons.Count];
+        for (int p = 0; p < polygons.Count; p++)
+            polygonArray[p] = polygons[p];
+
+        // Children before parents, so computed bounds can use the children's.
+        var postOrder = PostOrder(nodes);
+        var starts = new int[nodes.Count];
+        for (int i = 0; i < nodes.Count; i++)
+        {
+            starts[i] = indices.Count;
+            var list = nodes[i].Polygons ?? Array.Empty<int>();
+            for (int k = 0; k < list.Count; k++)
+            {
+                int p = list[k];
+                if (p < 0 || p >= polygons.Count)
+                    throw new ArgumentException($"{name}.nodes[{i}].polygons[{k}]: polygon index {p} is out of range 0..{polygons.Count - 1}.", nameof(nodes));
+                indices.Add(p);
+            }
+        }
+        foreach (int i in postOrder)
+        {
+            var node = nodes[i];
+            int count = (node.Polygons ?? Array.Empty<int>()).Count;
+            Sphere bounds;
+            if (node.Bounds is { } given)
+            {
+                Guard.Finite(given.Center, $"{name}.nodes[{i}].bounds.center");
+                Guard.NonNegative(given.Radius, $"{name}.nodes[{i}].bounds.radius");
+                bounds = given;
+            }
+            else
+            {
+                bounds = ComputeBounds(node, count, starts[i], indices, polygonArray, flat);
+            }
+            var plane = node.IsLeaf ? default : Plane.Normalize(node.SplitPlane);
+            flat[i] = new BspNode(plane, bounds, node.IsLeaf ? -1 : node.Front, node.IsLeaf ? -1 : node.Back,
+                starts[i], count, node.IsLeaf, node.IsLeaf && node.Solid);
+        }
+        return new BspTree(flat, polygonArray, indices.ToArray());
+    }
+
+    private static void CheckPlane(Plane plane, string field)
+    {
+        Guard.Finite(plane.Normal, field + ".normal");
+        Guard.Finite(plane.D, field + ".d");
+        if (plane.Normal.LengthSquared() < 1e-12f)
+            throw new ArgumentException($"{field}.normal: has zero length.", field);
+    }
+
+    private static List<int> PostOrder(IReadOnlyList<BspNodeData> nodes)
+    {
+        var result = new List<int>(nodes.Count);
+        var stack = new Stack<(int Node, bool Expanded)>();
+        stack.Push((0, false));
+        while (stack.Count > 0)
+        {
+            var (i, expanded) = stack.Pop();
+            if (expanded || nodes[i].IsLeaf)
+            {
+                result.Add(i);
+                continue;
+            }
+            stack.Push((i, true));
+            if (nodes[i].Front >= 0) stack.Push((nodes[i].Front, false));
+            if (nodes[i].Back >= 0) stack.Push((nodes[i].Back, false));
+        }
+        return result;
+    }
+
+    /// <summary>A sphere around the node's own polygons and its children's bounds (centre of their box).</summary>
+    private static Sphere ComputeBounds(BspNodeData node, int count, int start, List<int> indices, Polygon[] polygons, BspNode[] built)
+    {
+        var min = new Vector3(float.MaxValue);
+        var max = new Vector3(float.MinValue);
+        bool any = false;
+        for (int k = 0; k < count; k++)
+            foreach (var v in polygons[indices[start + k]].Vertices)
+            {
+                min = Vector3.Min(min, v);
+                max = Vector3.Max(max, v);
+                any = true;
+            }
+        if (!node.IsLeaf)
+            foreach (int child in new[] { node.Front, node.Back })
+            {
+                if (child < 0) continue;
+                var b = built[child].Bounds;
+                if (b.Radius <= 0 && b.Center == Vector3.Zero) continue;
+                min = Vector3.Min(min, b.Center - new Vector3(b.Radius));
+                max = Vector3.Max(max, b.Center + new Vector3(b.Radius));
+                any = true;
+            }
+        if (!any)
+            return new Sphere(Vector3.Zero, 0f);
+        var center = (min + max) * 0.5f;
+        float radius = 0f;
+        for (int k = 0; k < count; k++)
+            foreach (var v in polygons[indices[start + k]].Vertices)
+                radius = MathF.Max(radius, Vector3.Distance(center, v));
+        if (!node.IsLeaf)
+            foreach (int child in new[] { node.Front, node.Back })
+            {
+                if (child < 0) continue;
+                var b = built[child].Bounds;
+                if (b.Radius <= 0 && b.Center == Vector3.Zero) continue;
+                radius = MathF.Max(radius, Vector3.Distance(center, b.Center) + b.Radius);
+            }
+        return new Sphere(center, radius);
+    }
+}

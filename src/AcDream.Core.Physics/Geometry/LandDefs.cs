@@ -1,0 +1,50 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>Retail cell-id arithmetic: landblocks, outdoor land cells and indoor env cells.</summary>
+public static class LandDefs
+{
+    /// <summary>The lowest cell index of an indoor env cell; 1..64 are the 8×8 outdoor land cells.</summary>
+    public const uint FirstEnvCell = 0x100;
+
+    /// <summary>True for an outdoor land cell id (cell part below 0x100).</summary>
+    public static bool IsLandCell(uint cellId) => (cellId & 0xFFFF) < FirstEnvCell;
+
+    /// <summary>The landblock part (high 16 bits) of a cell id.</summary>
+    public static uint Landblock(uint cellId) => cellId >> 16;
+
+    /// <summary>
+    /// The vector from the south-west corner of <paramref name="fromCell"/>'s landblock to that of
+    /// <paramref name="toCell"/>'s landblock (retail get_block_offset): zero within one landblock.
+    /// </summary>
+    public static Vector3 BlockOffset(uint fromCell, uint toCell)
+    {
+        uint a = fromCell >> 16, b = toCell >> 16;
+        if (a == b)
+            return Vector3.Zero;
+        int dx = (int)(b >> 8) - (int)(a >> 8);
+        int dy = (int)(b & 0xFF) - (int)(a & 0xFF);
+        return new Vector3(dx * PhysicsConstants.LandblockLength, dy * PhysicsConstants.LandblockLength, 0f);
+    }
+
+    /// <summary>
+    /// The outdoor land cell id that holds a landblock-local point of landblock <paramref name="landblock"/>
+    /// (cells are numbered 1..64 column-major: index = x * 8 + y + 1), or 0 when the point is outside the block.
+    /// </summary>
+    public static uint LandCellAt(uint landblock, Vector3 point)
+    {
+        if (!(point.X >= 0 && point.Y >= 0 && point.X < PhysicsConstants.LandblockLength && point.Y < PhysicsConstants.LandblockLength))
+            return 0;
+        uint cx = (uint)(point.X / PhysicsConstants.LandCellLength);
+        uint cy = (uint)(point.Y / PhysicsConstants.LandCellLength);
+        return (landblock << 16) | (cx * 8 + cy + 1);
+    }
+
+    /// <summary>The landblock-local south-west corner of an outdoor land cell.</summary>
+    public static Vector3 LandCellCorner(uint cellId)
+    {
+        uint index = (cellId & 0xFFFF) - 1;
+        return new Vector3((index / 8) * PhysicsConstants.LandCellLength, (index % 8) * PhysicsConstants.LandCellLength, 0f);
+    }
+}

@@ -1,0 +1,79 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// How retail treats the back of a polygon (the DAT's SidesType / CullMode). A single-sided polygon
+/// collides only from its front; the others collide from both sides.
+/// </summary>
+public enum PolygonSides : byte
+{
+    /// <summary>Front face only (SidesType 0).</summary>
+    Single = 0,
+    /// <summary>Both faces, same surface (SidesType 1).</summary>
+    Double = 1,
+    /// <summary>Both faces, separate surfaces (SidesType 2).</summary>
+    Both = 2,
+}
+
+/// <summary>
+/// A convex physics polygon: its vertices (counter-clockwise seen from the front), its plane and its
+/// sidedness. Immutable after construction; the plane is computed the retail way (see <see cref="MakePlane"/>).
+/// Queries live in <see cref="PolygonQuery"/>.
+/// </summary>
+public sealed class Polygon
+{
+    private readonly Vector3[] _vertices;
+
+    /// <summary>Creates a polygon, validating it (finite vertices, at least 3, non-zero area).</summary>
+    /// <param name="vertices">The vertices, counter-clockwise seen from the front. Copied.</param>
+    /// <param name="sides">The sidedness.</param>
+    /// <param name="name">A name for error messages (e.g. "polygons[3]").</param>
+    public Polygon(ReadOnlySpan<Vector3> vertices, PolygonSides sides = PolygonSides.Single, string name = "polygon")
+    {
+        if (vertices.Length < 3)
+            throw new ArgumentException($"{name}: a polygon needs at least 3 vertices, got {vertices.Length}.", nameof(vertices));
+        for (int i = 0; i < vertices.Length; i++)
+            Guard.Finite(vertices[i], $"{name}.vertices[{i}]");
+        if (!Enum.IsDefined(sides))
+            throw new ArgumentException($"{name}.sides: unknown sidedness {(int)sides}.", nameof(sides));
+        _vertices = vertices.ToArray();
+        Sides = sides;
+        Plane = MakePlane(_vertices, name);
+    }
+
+    /// <summary>The vertices.</summary>
+    public ReadOnlySpan<Vector3> Vertices => _vertices;
+
+    /// <summary>The number of vertices.</summary>
+    public int VertexCount => _vertices.Length;
+
+    /// <summary>The plane: unit normal and D, with Dot(N, p) + D = 0 on the polygon.</summary>
+    public Plane Plane { get; }
+
+    /// <summary>The sidedness.</summary>
+    public PolygonSides Sides { get; }
+
+    /// <summary>
+    /// Retail make_plane: the normal is the normalized sum of the fan cross products from vertex 0
+    /// (robust for slightly non-planar input), D is minus the mean of the vertices' projections.
+    /// </summary>
+    internal static Plane MakePlane(ReadOnlySpan<Vector3> v, string name)
+    {
+        var sum = Vector3.Zero;
+        for (int i = 1; i < v.Length - 1; i++)
+            sum += Vector3.Cross(v[i] - v[0], v[i + 1] - v[0]);
+        float length = sum.Length();
+        if (!(length > 1e-12f))
+            throw new ArgumentException($"{name}: degenerate polygon (zero area or collinear vertices).");
+        var normal = sum / length;
+        float dot = 0f;
+        for (int i = 0; i < v.Length; i++)
+            dot += Vector3.Dot(normal, v[i]);
+        return new Plane(normal, -(dot / v.Length));
+    }
+
+    /// <inheritdoc />
+    public override string ToString() => $"Polygon({_vertices.Length} verts, n={Plane.Normal}, d={Plane.D}, {Sides})";
+}

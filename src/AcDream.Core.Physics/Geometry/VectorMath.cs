@@ -1,0 +1,39 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>Small vector helpers with retail's tolerances.</summary>
+internal static class VectorMath
+{
+    /// <summary>
+    /// Retail normalize_check_small: normalizes in place unless the vector is too short to have a
+    /// direction; returns true when it was too short (and leaves it unchanged).
+    /// </summary>
+    public static bool NormalizeCheckSmall(ref Vector3 v)
+    {
+        float length = v.Length();
+        if (length < PhysicsConstants.Epsilon)
+            return true;
+        v /= length;
+        return false;
+    }
+
+    /// <summary>Signed distance of a point from a plane (normal assumed unit).</summary>
+    public static float Distance(in Plane plane, Vector3 point) => Vector3.Dot(plane.Normal, point) + plane.D;
+
+    /// <summary>
+    /// Retail snap_to_plane: moves a vector within the plane by changing only its Z, so that its
+    /// horizontal part is kept (used to make motion follow a slope). Retail computes the Z as
+    /// -(n·xy + d)/nz + d/nz rather than -(n·xy)/nz; the same value in exact arithmetic, kept in retail's
+    /// form so the float rounding matches.
+    /// </summary>
+    public static Vector3 SnapToPlane(in Plane plane, Vector3 offset)
+    {
+        if (System.MathF.Abs(plane.Normal.Z) <= PhysicsConstants.Epsilon)
+            return offset;
+        float inv = 1.0f / plane.Normal.Z;
+        float dot2 = offset.X * plane.Normal.X + offset.Y * plane.Normal.Y;
+        offset.Z = -(dot2 + plane.D) * inv - inv * -plane.D;
+        return offset;
+    }
+}

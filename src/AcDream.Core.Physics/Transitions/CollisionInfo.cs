@@ -1,0 +1,116 @@
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// What a transition learned about contact (retail COLLISIONINFO): the contact plane under the mover
+/// and the last one known from earlier frames, the sliding and collision normals, and the objects hit.
+/// </summary>
+public sealed class CollisionInfo
+{
+    /// <summary>The last contact plane is known (carried between frames).</summary>
+    public bool LastKnownContactPlaneValid;
+    /// <summary>The last contact plane.</summary>
+    public Plane LastKnownContactPlane;
+    /// <summary>The last contact plane is water.</summary>
+    public bool LastKnownContactPlaneIsWater;
+    /// <summary>The cell of the last contact plane.</summary>
+    public uint LastKnownContactPlaneCellId;
+    /// <summary>A contact plane was found in this step.</summary>
+    public bool ContactPlaneValid;
+    /// <summary>The contact plane, in the landblock space of <see cref="ContactPlaneCellId"/>.</summary>
+    public Plane ContactPlane;
+    /// <summary>The cell whose landblock space the contact plane is in.</summary>
+    public uint ContactPlaneCellId;
+    /// <summary>The contact plane is water.</summary>
+    public bool ContactPlaneIsWater;
+    /// <summary>A sliding normal constrains the next step.</summary>
+    public bool SlidingNormalValid;
+    /// <summary>The sliding normal (horizontal).</summary>
+    public Vector3 SlidingNormal;
+    /// <summary>A collision normal was recorded.</summary>
+    public bool CollisionNormalValid;
+    /// <summary>The collision normal.</summary>
+    public Vector3 CollisionNormal;
+    /// <summary>Retail's adjust_offset field (kept for parity; unused by the resolution).</summary>
+    public Vector3 AdjustOffset;
+    /// <summary>The ids of the objects collided with, in order, without repeats.</summary>
+    public readonly List<uint> CollidedObjects = new(8);
+    /// <summary>The id of the last object whose test was not OK, or 0.</summary>
+    public uint LastCollidedObject;
+    /// <summary>The mover hit cell geometry or terrain.</summary>
+    public bool CollidedWithEnvironment;
+    /// <summary>Frames spent falling in place (retail's stationary-fall counter).</summary>
+    public int FramesStationaryFall;
+
+    /// <summary>Clears everything (retail COLLISIONINFO::init); keeps the list's capacity.</summary>
+    public void Reset()
+    {
+        LastKnownContactPlaneValid = false;
+        LastKnownContactPlane = default;
+        LastKnownContactPlaneIsWater = false;
+        LastKnownContactPlaneCellId = 0;
+        ContactPlaneValid = false;
+        ContactPlane = default;
+        ContactPlaneCellId = 0;
+        ContactPlaneIsWater = false;
+        SlidingNormalValid = false;
+        SlidingNormal = default;
+        CollisionNormalValid = false;
+        CollisionNormal = default;
+        AdjustOffset = default;
+        CollidedObjects.Clear();
+        LastCollidedObject = 0;
+        CollidedWithEnvironment = false;
+        FramesStationaryFall = 0;
+    }
+
+    /// <summary>Sets the contact plane.</summary>
+    public void SetContactPlane(in Plane plane, bool isWater)
+    {
+        ContactPlaneValid = true;
+        ContactPlane = plane;
+        ContactPlaneIsWater = isWater;
+    }
+
+    /// <summary>Drops the contact plane of this step.</summary>
+    public void ClearContactPlane()
+    {
+        ContactPlaneValid = false;
+        ContactPlaneIsWater = false;
+    }
+
+    /// <summary>
+    /// Records a collision normal, normalized; a vector too short to normalize is recorded as zero
+    /// (retail set_collision_normal).
+    /// </summary>
+    public void SetCollisionNormal(Vector3 normal)
+    {
+        CollisionNormalValid = true;
+        CollisionNormal = VectorMath.NormalizeCheckSmall(ref normal) ? Vector3.Zero : normal;
+    }
+
+    /// <summary>
+    /// Records a sliding normal: the horizontal part of <paramref name="normal"/>. Retail quirk: it
+    /// keeps the horizontal part unnormalized, and tests the full vector for smallness (ACE
+    /// CollisionInfo.SetSlidingNormal).
+    /// </summary>
+    public void SetSlidingNormal(Vector3 normal)
+    {
+        SlidingNormalValid = true;
+        SlidingNormal = new Vector3(normal.X, normal.Y, 0f);
+        if (VectorMath.NormalizeCheckSmall(ref normal))
+            SlidingNormal = Vector3.Zero;
+    }
+
+    /// <summary>Adds an object to the collided list once; a non-OK result makes it the last collided.</summary>
+    public void AddObject(uint objectId, TransitionState state)
+    {
+        if (CollidedObjects.Contains(objectId))
+            return;
+        CollidedObjects.Add(objectId);
+        if (state != TransitionState.OK)
+            LastCollidedObject = objectId;
+    }
+}

@@ -1,0 +1,274 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The moving spheres and every position along one transition (retail SPHEREPATH): where the mover
+/// started, where it is now (current), where it is being tried (check), and the step-up, step-down,
+/// walkable and negative-polygon bookkeeping the collision routines share. Reused between transitions:
+/// nothing here allocates after construction.
+/// </summary>
+public sealed class SpherePath
+{
+    /// <summary>How many spheres the mover has (1 or 2).</summary>
+    public int NumSphere;
+    /// <summary>The mover's spheres in its own space, scaled.</summary>
+    public SpherePair LocalSphere;
+    /// <summary>The lowest point of sphere 0 in the mover's space.</summary>
+    public Vector3 LocalLowPoint;
+    /// <summary>The spheres at the check position, landblock space of the check cell.</summary>
+    public SpherePair GlobalSphere;
+    /// <summary>The lowest point at the check position.</summary>
+    public Vector3 GlobalLowPoint;
+    /// <summary>The spheres at the check position in the space of the object or cell being tested.</summary>
+    public SpherePair LocalSpaceSphere;
+    /// <summary>The lowest point in the space being tested.</summary>
+    public Vector3 LocalSpaceLowPoint;
+    /// <summary>The spheres at the current position in the space being tested.</summary>
+    public SpherePair LocalSpaceCurrCenter;
+    /// <summary>The spheres at the current position, landblock space of the current cell.</summary>
+    public SpherePair GlobalCurrCenter;
+    /// <summary>The placement of the space being tested.</summary>
+    public Position LocalSpacePos;
+    /// <summary>World up expressed in the space being tested.</summary>
+    public Vector3 LocalSpaceZ;
+
+    /// <summary>The cell the transition began in.</summary>
+    public Cell? BeginCell;
+    /// <summary>The begin position; meaningless when <see cref="HasBeginPos"/> is false (a placement).</summary>
+    public Position BeginPos;
+    /// <summary>False for placements, which have no begin position.</summary>
+    public bool HasBeginPos;
+    /// <summary>The requested end position.</summary>
+    public Position EndPos;
+    /// <summary>The cell of the current (last accepted) position.</summary>
+    public Cell? CurCell;
+    /// <summary>The current (last accepted) position.</summary>
+    public Position CurPos;
+    /// <summary>The offset of the sub-step being tried.</summary>
+    public Vector3 GlobalOffset;
+
+    /// <summary>True while stepping up.</summary>
+    public bool StepUp;
+    /// <summary>The normal of the obstacle being stepped up.</summary>
+    public Vector3 StepUpNormal;
+    /// <summary>A step-up candidate collision was recorded; resolve it after the insert.</summary>
+    public bool Collide;
+    /// <summary>The cell of the check position.</summary>
+    public Cell? CheckCell;
+    /// <summary>The position being tried.</summary>
+    public Position CheckPos;
+    /// <summary>How the path is being inserted.</summary>
+    public InsertType InsertType;
+    /// <summary>True while stepping down.</summary>
+    public bool StepDown;
+    /// <summary>Saved insert type while a nested insert runs.</summary>
+    public InsertType Backup;
+    /// <summary>Saved check cell.</summary>
+    public Cell? BackupCell;
+    /// <summary>Saved check position.</summary>
+    public Position BackupCheckPos;
+    /// <summary>The obstruction found was ethereal.</summary>
+    public bool ObstructionEthereal;
+    /// <summary>The sphere touches an indoor cell.</summary>
+    public bool HitsInteriorCell;
+    /// <summary>A building's shell is being tested.</summary>
+    public bool BuildingCheck;
+    /// <summary>The least normal Z accepted as ground while stepping.</summary>
+    public float WalkableAllowance;
+    /// <summary>How far along the step-down the ground was found (1 = not yet).</summary>
+    public float WalkInterp;
+    /// <summary>The depth of the current step-down probe.</summary>
+    public float StepDownAmt;
+    /// <summary>The sphere at which the walkable polygon was found, in its space.</summary>
+    public Sphere WalkableCheckPos;
+    /// <summary>The walkable polygon under the mover, or null.</summary>
+    public Polygon? Walkable;
+    /// <summary>True while probing whether the ground continues (edge slide).</summary>
+    public bool CheckWalkable;
+    /// <summary>World up in the walkable polygon's space.</summary>
+    public Vector3 WalkableUp;
+    /// <summary>The placement of the walkable polygon's space.</summary>
+    public Position WalkablePos;
+    /// <summary>The scale of the walkable polygon's space.</summary>
+    public float WalkableScale;
+    /// <summary>The cell list matches the check position.</summary>
+    public bool CellArrayValid;
+    /// <summary>The pending negative-polygon hit asks for a step up.</summary>
+    public bool NegStepUp;
+    /// <summary>The normal of the pending negative-polygon hit (reversed).</summary>
+    public Vector3 NegCollisionNormal;
+    /// <summary>A polygon was hit from behind during this insert.</summary>
+    public bool NegPolyHit;
+    /// <summary>Placement may slide out of overlaps.</summary>
+    public bool PlacementAllowsSliding = true;
+
+    /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
+    public void InitPath(Cell? beginCell, Position? beginPos, Position endPos)
+    {
+        BeginCell = beginCell;
+        EndPos = endPos;
+        HasBeginPos = beginPos.HasValue;
+        if (beginPos is { } begin)
+        {
+            BeginPos = begin;
+            InsertType = InsertType.Transition;
+            CurPos = begin;
+        }
+        else
+        {
+            BeginPos = default;
+            InsertType = InsertType.Placement;
+            CurPos = endPos;
+        }
+        CurCell = beginCell;
+        CacheGlobalCurrCenter();
+    }
+
+    /// <summary>Sets the mover's spheres (at most two are used, as retail), scaled.</summary>
+    public void InitSphere(System.ReadOnlySpan<Sphere> spheres, float scale)
+    {
+        NumSphere = spheres.Length <= 2 ? spheres.Length : 2;
+        for (int i = 0; i < NumSphere; i++)
+            LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
+        LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
+    }
+
+    /// <summary>Moves the check position and its spheres by an offset.</summary>
+    public void AddOffsetToCheckPos(Vector3 offset)
+    {
+        CellArrayValid = false;
+        CheckPos.Frame.Origin += offset;
+        ShiftGlobalSpheres(offset);
+    }
+
+    /// <summary>
+    /// Re-labels the check position with another cell; an outdoor cell in another landblock moves the
+    /// origin into that landblock's frame.
+    /// </summary>
+    public void AdjustCheckPos(uint cellId)
+    {
+        if (LandDefs.IsLandCell(cellId))
+        {
+            var offset = LandDefs.BlockOffset(cellId, CheckPos.CellId);
+            ShiftGlobalSpheres(offset);
+            CheckPos.Frame.Origin += offset;
+        }
+        CheckPos.CellId = cellId;
+    }
+
+    /// <summary>Recomputes the spheres at the current position.</summary>
+    public void CacheGlobalCurrCenter()
+    {
+        for (int i = 0; i < NumSphere; i++)
+        {
+            GlobalCurrCenter[i].Center = CurPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalCurrCenter[i].Radius = LocalSphere[i].Radius;
+        }
+    }
+
+    /// <summary>Recomputes the spheres at the check position.</summary>
+    public void CacheGlobalSphere()
+    {
+        for (int i = 0; i < NumSphere; i++)
+        {
+            GlobalSphere[i].Radius = LocalSphere[i].Radius;
+            GlobalSphere[i].Center = CheckPos.LocalToGlobal(LocalSphere[i].Center);
+        }
+        GlobalLowPoint = CheckPos.LocalToGlobal(LocalLowPoint);
+    }
+
+    private void ShiftGlobalSpheres(Vector3 offset)
+    {
+        for (int i = 0; i < NumSphere; i++)
+            GlobalSphere[i].Center += offset;
+        GlobalLowPoint += offset;
+    }
+
+    /// <summary>
+    /// Expresses the current and check spheres in the space of <paramref name="space"/> (an object part
+    /// or a cell), dividing by its scale, ready for a BSP query.
+    /// </summary>
+    public void CacheLocalSpaceSphere(in Position space, float scale)
+    {
+        float invScale = 1.0f / scale;
+        for (int i = 0; i < NumSphere; i++)
+        {
+            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(CurPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceCurrCenter[i].Radius = LocalSphere[i].Radius * invScale;
+            LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
+            LocalSpaceSphere[i].Center = space.LocalToLocal(CheckPos, LocalSphere[i].Center) * invScale;
+        }
+        LocalSpacePos = space;
+        LocalSpaceZ = space.Frame.GlobalToLocalVec(Vector3.UnitZ);
+        LocalSpaceLowPoint = LocalSpaceSphere[0].Center - LocalSpaceZ * LocalSpaceSphere[0].Radius;
+    }
+
+    /// <summary>True when the remembered walkable polygon still holds the mover (or there is none).</summary>
+    public bool CheckWalkables()
+    {
+        if (Walkable is null)
+            return true;
+        var probe = new Sphere(WalkableCheckPos.Center, WalkableCheckPos.Radius * 0.5f);
+        return PolygonQuery.CheckWalkable(Walkable, probe, WalkableUp, small: false);
+    }
+
+    /// <summary>The offset from the current cell's landblock to the check cell's.</summary>
+    public Vector3 CurToCheckBlockOffset() => LandDefs.BlockOffset(CurPos.CellId, CheckPos.CellId);
+
+    /// <summary>True when a normal Z is steep enough to count as ground for the current step.</summary>
+    public bool IsWalkableAllowable(float normalZ) => normalZ > WalkableAllowance;
+
+    /// <summary>Restores the saved check position and cell.</summary>
+    public void RestoreCheckPos()
+    {
+        CheckPos = BackupCheckPos;
+        CheckCell = BackupCell;
+        CellArrayValid = false;
+        CacheGlobalSphere();
+    }
+
+    /// <summary>Saves the check position and cell.</summary>
+    public void SaveCheckPos()
+    {
+        BackupCell = CheckCell;
+        BackupCheckPos = CheckPos;
+    }
+
+    /// <summary>Sets the check position and cell.</summary>
+    public void SetCheckPos(in Position position, Cell? cell)
+    {
+        CheckPos = position;
+        CheckCell = cell;
+        CellArrayValid = false;
+        CacheGlobalSphere();
+    }
+
+    /// <summary>Records a step-up candidate: the obstacle's normal, and the position to come back to.</summary>
+    public void SetCollide(Vector3 collisionNormal)
+    {
+        Collide = true;
+        BackupCell = CheckCell;
+        BackupCheckPos = CheckPos;
+        StepUpNormal = collisionNormal;
+        WalkInterp = 1.0f;
+    }
+
+    /// <summary>Records a polygon hit from behind, to resolve after the insert.</summary>
+    public void SetNegPolyHit(bool stepUp, Vector3 collisionNormal)
+    {
+        NegStepUp = stepUp;
+        NegPolyHit = true;
+        NegCollisionNormal = -collisionNormal;
+    }
+
+    /// <summary>Remembers the walkable polygon found under the mover.</summary>
+    public void SetWalkable(in Sphere sphere, Polygon polygon, Vector3 up, in Position localPos, float scale)
+    {
+        WalkableCheckPos = sphere;
+        Walkable = polygon;
+        WalkableUp = up;
+        WalkablePos = localPos;
+        WalkableScale = scale;
+    }
+}

@@ -1,0 +1,21 @@
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A cell of the world (retail CObjCell): an outdoor LandCell or an indoor
+/// EnvCell. A cell collides a sphere path with its own geometry; the objects in it live
+/// in the ShadowObjectRegistry.
+/// </summary>
+public abstract class Cell
+{
+    /// <summary>Creates a cell.</summary>
+    protected Cell(uint id) => Id = id;
+
+    /// <summary>The retail cell id (landblock &lt;&lt; 16 | cell).</summary>
+    public uint Id { get; }
+
+    /// <summary>Collides the transition's check spheres with this cell's geometry (retail find_env_collisions).</summary>
+    public abstract TransitionState FindEnvCollisions(Transition transition);
+
+    /// <inheritdoc />
+    public override string ToString() => $"{GetType().Name} 0x{Id:X8}";
+}
