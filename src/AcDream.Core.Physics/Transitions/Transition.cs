@@ -7,6 +7,8 @@ namespace AcDream.Core.Physics;
 /// One move of one mover through the world (retail CTransition): the mover (<see cref="ObjectInfo"/>),
 /// its path (<see cref="SpherePath"/>) and what it touched (<see cref="CollisionInfo"/>). Reusable: a
 /// transition allocates nothing after its first use. Not thread-safe: use one per thread.
+/// The work is split by concern over partial files: sub-stepping and validation here, insertion into
+/// cells in Transition.Insert.cs, stepping in Transition.Steps.cs, edge handling in Transition.Edges.cs.
 /// </summary>
 public sealed partial class Transition
 {
@@ -16,15 +18,310 @@ public sealed partial class Transition
     public readonly SpherePath SpherePath = new();
     /// <summary>The contacts.</summary>
     public readonly CollisionInfo CollisionInfo = new();
+    /// <summary>The cells the check position touches.</summary>
+    public readonly CellArray CellArray = new();
+
+    /// <summary>Creates a transition over a world.</summary>
+    public Transition(PhysicsWorld world) => World = world ?? throw new ArgumentNullException(nameof(world));
+
+    /// <summary>The world collided with.</summary>
+    public PhysicsWorld World { get; }
+
+    /// <summary>Diagnostics sink; null (the default) costs nothing.</summary>
+    public ITransitionObserver? Observer { get; set; }
+
+    /// <summary>Retail's step-count rule, exposed for tests and tools.</summary>
+    /// <param name="offset">The whole motion.</param>
+    /// <param name="radius">The radius of sphere 0.</param>
+    /// <param name="isViewer">The camera's arm differs.</param>
+    /// <param name="offsetPerStep">The motion of one sub-step.</param>
+    /// <returns>The number of sub-steps.</returns>
+    public static int CalcNumSteps(Vector3 offset, float radius, bool isViewer, out Vector3 offsetPerStep)
+    {
+        float dist = offset.Length();
+        float step = dist / radius;
+        if (!isViewer)
+        {
+            if (step > 1.0f)
+            {
+                int n = (int)MathF.Ceiling(step);
+                offsetPerStep = offset * (1.0f / n);
+                return n;
+            }
+            offsetPerStep = offset;
+            return offset != Vector3.Zero ? 1 : 0;
+        }
+        if (dist <= PhysicsConstants.Epsilon)
+        {
+            offsetPerStep = Vector3.Zero;
+            return 0;
+        }
+        offsetPerStep = offset * (1.0f / step);
+        return (int)MathF.Floor(step) + 1;
+    }
 
     /// <summary>
-    /// Retail step_up: tries to climb the obstacle whose normal is given by stepping the check position
-    /// down onto it from above. True when the mover found walkable ground within its step height.
+    /// Retail find_transitional_position: walks the path from the current position to the end in
+    /// sub-steps, inserting each into the world and keeping what the collisions allow. True when the last
+    /// step was accepted.
     /// </summary>
-    public bool StepUp(Vector3 collisionNormal) => throw new NotImplementedException();
+    public bool FindTransitionalPosition()
+    {
+        var path = SpherePath;
+        if (path.BeginCell is null)
+            return false;
+        var state = TransitionState.OK;
+        Vector3 offset = Vector3.Zero, perStep = Vector3.Zero;
+        int numSteps = 1;
+        if (path.HasBeginPos)
+        {
+            offset = path.BeginPos.GetOffset(path.EndPos);
+            numSteps = CalcNumSteps(offset, path.LocalSphere[0].Radius, IsViewer, out perStep);
+        }
+        if (numSteps > PhysicsConstants.MaxSubSteps)
+            return false;
+        bool freeRotate = (ObjectInfo.State & ObjectInfoState.FreeRotate) != 0;
+        if (freeRotate)
+            path.CurPos.Frame.Orientation = path.EndPos.Frame.Orientation;
+        path.SetCheckPos(path.CurPos, path.CurCell);
+
+        if (numSteps <= 0)
+        {
+            if (!freeRotate)
+                path.CurPos.Frame.Orientation = path.EndPos.Frame.Orientation;
+            path.CellArrayValid = true;
+            path.HitsInteriorCell = false;
+            BuildCellArray(findContaining: false);
+            return true;
+        }
+
+        for (int step = 0; step < numSteps; step++)
+        {
+            if (IsViewer && step == numSteps - 1)
+            {
+                // The camera's last step covers exactly what is left of the motion.
+                float length = offset.Length();
+                if (length > PhysicsConstants.Epsilon)
+                    perStep = offset * (length - path.LocalSphere[0].Radius * (numSteps - 1)) / length;
+            }
+            path.GlobalOffset = AdjustOffset(perStep);
+            if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
+                return step != 0 && state == TransitionState.OK;
+            if (!freeRotate)
+                path.CheckPos.Frame.InterpolateRotation(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps);
+
+            CollisionInfo.SlidingNormalValid = false;
+            CollisionInfo.ClearContactPlane();
+            Observer?.OnSubStep(step, path.CheckPos.Origin, path.GlobalOffset);
+
+            if (path.InsertType != InsertType.Transition)
+            {
+                state = ValidatePlacementTransition(TransitionalInsert(3));
+                if (state == TransitionState.OK)
+                    return true;
+                if (!path.PlacementAllowsSliding)
+                    return false;
+                path.AddOffsetToCheckPos(path.GlobalOffset);
+            }
+            else
+            {
+                path.AddOffsetToCheckPos(path.GlobalOffset);
+                state = ValidateTransition(TransitionalInsert(3));
+                if (CollisionInfo.FramesStationaryFall > 0)
+                    break;
+            }
+            if (CollisionInfo.CollisionNormalValid && (ObjectInfo.State & ObjectInfoState.PathClipped) != 0)
+                break;
+        }
+        return state == TransitionState.OK;
+    }
+
+    private bool IsViewer => (ObjectInfo.State & ObjectInfoState.IsViewer) != 0;
 
     /// <summary>
-    /// Retail SPHEREPATH::step_up_slide: gives up a step-up and slides along the step-up normal instead.
+    /// Retail adjust_offset: constrains a sub-step's motion by the sliding normal and the contact plane,
+    /// and lifts the check position back onto the contact plane when it has sunk into it.
     /// </summary>
-    public TransitionState StepUpSlide() => throw new NotImplementedException();
+    public Vector3 AdjustOffset(Vector3 offset)
+    {
+        var ci = CollisionInfo;
+        bool slide = false;
+        float slideAngle = Vector3.Dot(offset, ci.SlidingNormal);
+        if (ci.SlidingNormalValid)
+        {
+            if (slideAngle < 0.0f) slide = true;
+            else ci.SlidingNormalValid = false;
+        }
+        if (!ci.ContactPlaneValid)
+            return slide ? offset - ci.SlidingNormal * slideAngle : offset;
+
+        float planeAngle = Vector3.Dot(offset, ci.ContactPlane.Normal);
+        if (slide)
+        {
+            var along = Vector3.Cross(ci.ContactPlane.Normal, ci.SlidingNormal);
+            offset = VectorMath.NormalizeCheckSmall(ref along) ? Vector3.Zero : Vector3.Dot(along, offset) * along;
+        }
+        else if (planeAngle <= 0.0f)
+        {
+            offset -= ci.ContactPlane.Normal * planeAngle;
+        }
+        else
+        {
+            offset = VectorMath.SnapToPlane(ci.ContactPlane, offset);
+        }
+
+        if (ci.ContactPlaneCellId == 0 || ci.ContactPlaneIsWater)
+            return offset;
+        var sphere = SpherePath.GlobalSphere[0];
+        var blockOffset = LandDefs.BlockOffset(SpherePath.CheckPos.CellId, ci.ContactPlaneCellId);
+        float dist = VectorMath.Distance(ci.ContactPlane, sphere.Center - blockOffset);
+        if (dist >= sphere.Radius - PhysicsConstants.Epsilon)
+            return offset;
+        float lift = (sphere.Radius - dist) / ci.ContactPlane.Normal.Z;
+        if (sphere.Radius > MathF.Abs(lift))
+            SpherePath.AddOffsetToCheckPos(new Vector3(0, 0, lift));
+        return offset;
+    }
+
+    /// <summary>
+    /// Retail validate_transition: accepts or rejects the sub-step's result, restores the current position
+    /// on failure (remembering a collision normal), keeps the last known contact plane, and updates the
+    /// mover's Contact / OnWalkable state.
+    /// </summary>
+    internal TransitionState ValidateTransition(TransitionState state)
+    {
+        var path = SpherePath;
+        var ci = CollisionInfo;
+        bool redo = true;
+        if (state != TransitionState.OK || PositionsEqual(path.CheckPos, path.CurPos))
+        {
+            redo = false;
+            if (state != TransitionState.OK)
+            {
+                if (state != TransitionState.Invalid)
+                {
+                    if (ci.LastKnownContactPlaneValid)
+                    {
+                        float dist = VectorMath.Distance(ci.LastKnownContactPlane, path.GlobalCurrCenter[0].Center);
+                        if (path.GlobalSphere[0].Radius + PhysicsConstants.Epsilon > MathF.Abs(dist))
+                        {
+                            ci.SetContactPlane(ci.LastKnownContactPlane, ci.LastKnownContactPlaneIsWater);
+                            ci.ContactPlaneCellId = ci.LastKnownContactPlaneCellId;
+                            if ((ObjectInfo.State & ObjectInfoState.OnWalkable) != 0)
+                                redo = true;
+                        }
+                    }
+                    if (!ci.CollisionNormalValid)
+                        ci.SetCollisionNormal(Vector3.UnitZ);
+                    path.SetCheckPos(path.CurPos, path.CurCell);
+                    BuildCellArray(findContaining: false);
+                    state = TransitionState.OK;
+                }
+            }
+            else
+            {
+                SetCurrentCheckPos();
+            }
+        }
+        else
+        {
+            SetCurrentCheckPos();
+        }
+
+        if (ci.CollisionNormalValid)
+            ci.SetSlidingNormal(ci.CollisionNormal);
+
+        if (!IsViewer && (ObjectInfo.PhysicsState & PhysicsState.Gravity) != 0)
+            UpdateStationaryFall(redo);
+
+        ci.LastKnownContactPlaneValid = ci.ContactPlaneValid;
+        if (ci.ContactPlaneValid)
+        {
+            ci.LastKnownContactPlane = ci.ContactPlane;
+            ci.LastKnownContactPlaneCellId = ci.ContactPlaneCellId;
+            ci.LastKnownContactPlaneIsWater = ci.ContactPlaneIsWater;
+            ObjectInfo.State |= ObjectInfoState.Contact;
+            if (ObjectInfo.IsValidWalkable(ci.ContactPlane.Normal))
+                ObjectInfo.State |= ObjectInfoState.OnWalkable;
+            else
+                ObjectInfo.State &= ~ObjectInfoState.OnWalkable;
+        }
+        else
+        {
+            ObjectInfo.State &= ~(ObjectInfoState.Contact | ObjectInfoState.OnWalkable);
+        }
+        return state;
+    }
+
+    /// <summary>
+    /// Retail's stationary-fall counter: a falling mover that fails to move for three sub-steps in a row
+    /// is given a floor under its feet.
+    /// </summary>
+    private void UpdateStationaryFall(bool redo)
+    {
+        var ci = CollisionInfo;
+        if (redo)
+        {
+            ci.FramesStationaryFall = 0;
+            return;
+        }
+        if (ci.FramesStationaryFall == 0) { ci.FramesStationaryFall = 1; return; }
+        if (ci.FramesStationaryFall == 1) { ci.FramesStationaryFall = 2; return; }
+        ci.FramesStationaryFall = 3;
+        var sphere = SpherePath.GlobalSphere[0];
+        var floor = new Plane(Vector3.UnitZ, sphere.Radius - sphere.Center.Z);
+        ci.SetContactPlane(floor, false);
+        ci.ContactPlaneCellId = SpherePath.CheckPos.CellId;
+        if ((ObjectInfo.State & ObjectInfoState.Contact) == 0)
+        {
+            ci.SetCollisionNormal(floor.Normal);
+            ci.CollidedWithEnvironment = true;
+        }
+    }
+
+    private static bool PositionsEqual(in Position a, in Position b) =>
+        a.CellId == b.CellId && a.Frame.Origin == b.Frame.Origin && a.Frame.Orientation == b.Frame.Orientation;
+
+    /// <summary>Accepts the check position as the current one.</summary>
+    internal void SetCurrentCheckPos()
+    {
+        var path = SpherePath;
+        path.CurPos = path.CheckPos;
+        path.CurCell = path.CheckCell;
+        path.CacheGlobalCurrCenter();
+        path.SetCheckPos(path.CurPos, path.CurCell);
+    }
+
+    /// <summary>Retail build_cell_array: the cells the check spheres touch; optionally the one holding sphere 0.</summary>
+    internal Cell? BuildCellArray(bool findContaining)
+    {
+        var path = SpherePath;
+        path.CellArrayValid = true;
+        path.HitsInteriorCell = false;
+        return World.Cells.FindCellList(path.CheckPos, path.GlobalSphere[..path.NumSphere], CellArray, findContaining, path);
+    }
+
+    /// <summary>Sets the contact plane carried from the previous frame (retail init_contact_plane).</summary>
+    public void InitContactPlane(uint cellId, in Plane plane, bool isWater)
+    {
+        InitLastKnownContactPlane(cellId, plane, isWater);
+        CollisionInfo.SetContactPlane(plane, isWater);
+        CollisionInfo.ContactPlaneCellId = cellId;
+    }
+
+    /// <summary>Sets the last known contact plane (retail init_last_known_contact_plane).</summary>
+    public void InitLastKnownContactPlane(uint cellId, in Plane plane, bool isWater)
+    {
+        CollisionInfo.LastKnownContactPlaneValid = true;
+        CollisionInfo.LastKnownContactPlane = plane;
+        CollisionInfo.LastKnownContactPlaneIsWater = isWater;
+        CollisionInfo.LastKnownContactPlaneCellId = cellId;
+    }
+
+    /// <summary>Sets the sliding normal carried from the previous frame (retail init_sliding_normal).</summary>
+    public void InitSlidingNormal(Vector3 normal)
+    {
+        CollisionInfo.SlidingNormalValid = true;
+        CollisionInfo.SlidingNormal = VectorMath.NormalizeCheckSmall(ref normal) ? Vector3.Zero : normal;
+    }
 }

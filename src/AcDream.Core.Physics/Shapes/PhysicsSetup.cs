@@ -1,0 +1,75 @@
+using System;
+using System.Collections.Generic;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>One part of a setup: a physics model (or none) placed by a frame in the setup's space.</summary>
+public sealed class SetupPart
+{
+    /// <summary>Creates a part.</summary>
+    public SetupPart(PhysicsModel? model, Frame frame)
+    {
+        Model = model;
+        Frame = frame;
+    }
+
+    /// <summary>The part's physics model, or null for a part without a physics BSP.</summary>
+    public PhysicsModel? Model { get; }
+    /// <summary>The part's placement in the setup's space.</summary>
+    public Frame Frame { get; }
+}
+
+/// <summary>
+/// What a retail Setup carries for collision, and nothing more: parts with physics models, cylspheres,
+/// spheres, the object's height and radius, and its step heights. Setup-space, unscaled.
+/// </summary>
+public sealed class PhysicsSetup
+{
+    /// <summary>The parts, in retail order.</summary>
+    public IReadOnlyList<SetupPart> Parts { get; init; } = Array.Empty<SetupPart>();
+    /// <summary>The collision cylinders (axis world Z).</summary>
+    public IReadOnlyList<CylSphere> CylSpheres { get; init; } = Array.Empty<CylSphere>();
+    /// <summary>The collision spheres.</summary>
+    public IReadOnlyList<Sphere> Spheres { get; init; } = Array.Empty<Sphere>();
+    /// <summary>The object's height.</summary>
+    public float Height { get; init; }
+    /// <summary>The object's radius.</summary>
+    public float Radius { get; init; }
+    /// <summary>How high a mover with this setup may step up.</summary>
+    public float StepUpHeight { get; init; }
+    /// <summary>How far a mover with this setup steps down to stay grounded.</summary>
+    public float StepDownHeight { get; init; }
+
+    /// <summary>True when any part has a physics BSP (retail CacheHasPhysicsBSP).</summary>
+    public bool HasPhysicsBsp
+    {
+        get
+        {
+            foreach (var part in Parts)
+                if (part?.Model is not null)
+                    return true;
+            return false;
+        }
+    }
+
+    /// <summary>Checks every field; throws an <see cref="ArgumentException"/> naming the first bad one.</summary>
+    public void Validate(string name = "setup")
+    {
+        if (Parts is null) throw new ArgumentException($"{name}.parts: is null.");
+        if (CylSpheres is null) throw new ArgumentException($"{name}.cylSpheres: is null.");
+        if (Spheres is null) throw new ArgumentException($"{name}.spheres: is null.");
+        for (int i = 0; i < Parts.Count; i++)
+        {
+            if (Parts[i] is null) throw new ArgumentException($"{name}.parts[{i}]: is null.");
+            Guard.Frame(Parts[i].Frame, $"{name}.parts[{i}].frame");
+        }
+        for (int i = 0; i < CylSpheres.Count; i++)
+            Guard.CylSphere(CylSpheres[i], $"{name}.cylSpheres[{i}]");
+        for (int i = 0; i < Spheres.Count; i++)
+            Guard.Sphere(Spheres[i], $"{name}.spheres[{i}]");
+        Guard.NonNegative(Height, $"{name}.height");
+        Guard.NonNegative(Radius, $"{name}.radius");
+        Guard.NonNegative(StepUpHeight, $"{name}.stepUpHeight");
+        Guard.NonNegative(StepDownHeight, $"{name}.stepDownHeight");
+    }
+}

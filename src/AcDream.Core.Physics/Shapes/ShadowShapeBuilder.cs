@@ -1,0 +1,42 @@
+using System;
+using System.Collections.Generic;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>Turns a setup into the collision shapes that represent an object (the retail CPartArray's physics content).</summary>
+public static class ShadowShapeBuilder
+{
+    /// <summary>
+    /// Emits every shape of the setup, scaled as retail scales them: one BSP shape per part that has a
+    /// physics model (part origin × scale, model scale = scale), one cylinder per cylsphere (low point,
+    /// radius and height × scale), one sphere per sphere (centre and radius × scale). All are kept: retail
+    /// stores both a door's BSP and its cylinder and chooses between them when colliding.
+    /// Order: BSP parts, then cylinders, then spheres, each in setup order.
+    /// </summary>
+    public static ShadowShape[] FromSetup(PhysicsSetup setup, float scale = 1f, string name = "setup")
+    {
+        ArgumentNullException.ThrowIfNull(setup);
+        Guard.Positive(scale, $"{name}.scale");
+        setup.Validate(name);
+        var shapes = new List<ShadowShape>(setup.Parts.Count + setup.CylSpheres.Count + setup.Spheres.Count);
+        for (int i = 0; i < setup.Parts.Count; i++)
+        {
+            var part = setup.Parts[i];
+            if (part.Model is null)
+                continue;
+            var frame = new Frame(part.Frame.Origin * scale, Guard.Rotation(part.Frame.Orientation, $"{name}.parts[{i}].frame.orientation"));
+            shapes.Add(ShadowShape.ForPart(i, part.Model, frame, scale));
+        }
+        for (int i = 0; i < setup.CylSpheres.Count; i++)
+        {
+            var c = setup.CylSpheres[i];
+            shapes.Add(ShadowShape.ForCylinder(i, new CylSphere(c.LowPoint * scale, c.Radius * scale, c.Height * scale)));
+        }
+        for (int i = 0; i < setup.Spheres.Count; i++)
+        {
+            var s = setup.Spheres[i];
+            shapes.Add(ShadowShape.ForSphere(i, new Sphere(s.Center * scale, s.Radius * scale)));
+        }
+        return shapes.ToArray();
+    }
+}

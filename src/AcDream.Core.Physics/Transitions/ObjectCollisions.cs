@@ -1,0 +1,207 @@
+using System;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Collides a transition with the objects of one cell (retail CObjCell::find_obj_collisions and
+/// CPhysicsObj::find_obj_collisions), through the retail dispatch ladder.
+/// </summary>
+public static class ObjectCollisions
+{
+    /// <summary>
+    /// Retail's binary choice on HAS_PHYSICS_BSP_PS (acclient CPhysicsObj::FindObjCollisions; ACE
+    /// PhysicsObj.cs): an object with the bit collides through its parts' BSPs only — its cylspheres and
+    /// spheres are never tested — unless the mover is a missile that ignores it or the PvP exemption applies.
+    /// </summary>
+    public static bool BspOnlyDispatch(PhysicsState targetState, bool missileIgnore, bool exemption) =>
+        (targetState & PhysicsState.HasPhysicsBsp) != 0 && !missileIgnore && !exemption;
+
+    /// <summary>
+    /// The PvP exemption: two players pass through each other unless either is impenetrable or they are
+    /// both PK or both PK-lite (ACE PhysicsObj.FindObjCollisions).
+    /// </summary>
+    public static bool PvpExemption(ObjectInfoState mover, ShadowFlags target)
+    {
+        if ((target & ShadowFlags.IsPlayer) == 0 || (mover & ObjectInfoState.IsPlayer) == 0)
+            return false;
+        if ((mover & ObjectInfoState.IsImpenetrable) != 0 || (target & ShadowFlags.IsImpenetrable) != 0)
+            return false;
+        if ((mover & ObjectInfoState.IsPK) != 0 && (target & ShadowFlags.IsPK) != 0)
+            return false;
+        if ((mover & ObjectInfoState.IsPKLite) != 0 && (target & ShadowFlags.IsPKLite) != 0)
+            return false;
+        return true;
+    }
+
+    /// <summary>
+    /// Retail OBJECTINFO::missile_ignore (ACE's two-way reading): a missile target is ignored by a
+    /// non-player mover, and by a player unless it is the missile's target; a missile mover ignores
+    /// ethereal or (when it has a target) creature objects other than its target.
+    /// </summary>
+    public static bool MissileIgnore(ObjectInfo mover, uint targetId, PhysicsState targetState, ShadowFlags targetFlags)
+    {
+        if ((targetState & PhysicsState.Missile) != 0)
+            return !mover.IsPlayer;
+        if ((mover.PhysicsState & PhysicsState.Missile) != 0 && targetId != mover.TargetId)
+            return (targetState & PhysicsState.Ethereal) != 0 || (mover.TargetId != 0 && (targetFlags & ShadowFlags.IsCreature) != 0);
+        return false;
+    }
+
+    /// <summary>
+    /// Collides with every object in a cell's rows, last registered first (ACE iterates a cell's shadow
+    /// list from the end); the first non-OK result returns. Rows of one object are contiguous.
+    /// </summary>
+    public static TransitionState FindInCell(Transition transition, ReadOnlySpan<ShadowEntry> rows)
+    {
+        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
+            return TransitionState.OK;
+        uint self = transition.ObjectInfo.ObjectId;
+        int end = rows.Length;
+        while (end > 0)
+        {
+            uint id = rows[end - 1].EntityId;
+            int start = end - 1;
+            while (start > 0 && rows[start - 1].EntityId == id)
+                start--;
+            if (id != self || self == 0)
+            {
+                var state = FindObjectCollisions(transition, rows.Slice(start, end - start));
+                if (state != TransitionState.OK)
+                {
+                    // ACE: an ethereal object does not block a placement.
+                    if (!(transition.SpherePath.InsertType == InsertType.Placement && (rows[start].State & PhysicsState.Ethereal) != 0))
+                        return state;
+                }
+            }
+            end = start;
+        }
+        return TransitionState.OK;
+    }
+
+    /// <summary>One object (all its rows): the retail ladder BSP-only → cylspheres → spheres → nothing.</summary>
+    private static TransitionState FindObjectCollisions(Transition transition, ReadOnlySpan<ShadowEntry> shapes)
+    {
+        var path = transition.SpherePath;
+        var mover = transition.ObjectInfo;
+        var observer = transition.Observer;
+        ref readonly var head = ref shapes[0];
+        var state = head.State;
+
+        if ((state & PhysicsState.Ethereal) != 0 && (state & PhysicsState.IgnoreCollisions) != 0)
+        {
+            NotifySkipped(observer, shapes, SkipReason.EtherealIgnoreCollisions);
+            return TransitionState.OK;
+        }
+        bool isCreature = (state & PhysicsState.Missile) != 0 || (head.Flags & ShadowFlags.IsCreature) != 0;
+        if ((mover.State & ObjectInfoState.IsViewer) != 0 && (head.Flags & ShadowFlags.IsCreature) != 0)
+        {
+            NotifySkipped(observer, shapes, SkipReason.ViewerVsCreature);
+            return TransitionState.OK;
+        }
+        bool ethereal = false;
+        if ((state & PhysicsState.Ethereal) != 0 || ((state & PhysicsState.Static) == 0 && mover.Ethereal))
+        {
+            if (path.StepDown)
+            {
+                NotifySkipped(observer, shapes, SkipReason.EtherealStepDown);
+                return TransitionState.OK;
+            }
+            ethereal = true;
+        }
+        path.ObstructionEthereal = ethereal;
+
+        bool exemption = PvpExemption(mover.State, head.Flags);
+        bool missileIgnore = MissileIgnore(mover, head.EntityId, state, head.Flags);
+        ShadowShapeKind rung;
+        if (BspOnlyDispatch(state, missileIgnore, exemption))
+            rung = ShadowShapeKind.Bsp;
+        else if (missileIgnore || exemption)
+        {
+            NotifySkipped(observer, shapes, SkipReason.Exempt);
+            path.ObstructionEthereal = false;
+            return TransitionState.OK;
+        }
+        else if (head.CylSphereCount > 0)
+            rung = ShadowShapeKind.Cylinder;
+        else
+            rung = ShadowShapeKind.Sphere;
+
+        foreach (ref readonly var row in shapes)
+        {
+            if (row.Kind != rung)
+            {
+                observer?.OnShapeSkipped(row.EntityId, row.Kind, row.Shape.Index,
+                    rung == ShadowShapeKind.Bsp ? SkipReason.BspOnlyDispatch : row.Kind == ShadowShapeKind.Bsp ? SkipReason.NotBspDispatch : SkipReason.HasCylinders);
+                continue;
+            }
+            var result = TestShape(transition, row, isCreature);
+            observer?.OnShapeTested(row.EntityId, row.Kind, row.Shape.Index, result);
+            if (result != TransitionState.OK)
+            {
+                if (observer is not null && transition.CollisionInfo.CollisionNormalValid)
+                    observer.OnObjectNormal(row.EntityId, row.Kind, transition.CollisionInfo.CollisionNormal);
+                return AfterHit(transition, row, result, ethereal, isCreature);
+            }
+        }
+        path.ObstructionEthereal = false;
+        return TransitionState.OK;
+    }
+
+    private static TransitionState TestShape(Transition transition, in ShadowEntry row, bool isCreature)
+    {
+        var path = transition.SpherePath;
+        var shape = row.Shape;
+        switch (shape.Kind)
+        {
+            case ShadowShapeKind.Bsp:
+                var partPos = new Position(row.Position.CellId, row.Position.Frame.Combine(shape.PartFrame));
+                return PartCollision.Collide(transition, shape.Model!, partPos, shape.ModelScale);
+            case ShadowShapeKind.Cylinder:
+                // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
+                path.CacheLocalSpaceSphere(row.Position, 1.0f);
+                var cyl = shape.Cylinder;
+                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
+                return CylSphereCollision.IntersectsSphere(cyl, transition);
+            default:
+                var sphere = shape.Sphere;
+                sphere.Center = row.Position.LocalToGlobal(sphere.Center) + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
+                return SphereCollision.IntersectsSphere(sphere, transition, isCreature);
+        }
+    }
+
+    /// <summary>Retail's bookkeeping after a hit: static objects count as environment; ethereal objects and ignored creatures let the mover through but are recorded.</summary>
+    private static TransitionState AfterHit(Transition transition, in ShadowEntry row, TransitionState result, bool ethereal, bool isCreature)
+    {
+        var path = transition.SpherePath;
+        var ci = transition.CollisionInfo;
+        var mover = transition.ObjectInfo;
+        if (!path.StepDown)
+        {
+            if ((row.State & PhysicsState.Static) != 0)
+            {
+                if ((mover.State & ObjectInfoState.Contact) == 0)
+                    ci.CollidedWithEnvironment = true;
+            }
+            else if (ethereal || (isCreature && (mover.State & ObjectInfoState.IgnoreCreatures) != 0))
+            {
+                result = TransitionState.OK;
+                ci.CollisionNormalValid = false;
+                ci.AddObject(row.EntityId, TransitionState.OK);
+            }
+            else
+            {
+                ci.AddObject(row.EntityId, result);
+            }
+        }
+        path.ObstructionEthereal = false;
+        return result;
+    }
+
+    private static void NotifySkipped(ITransitionObserver? observer, ReadOnlySpan<ShadowEntry> shapes, SkipReason reason)
+    {
+        if (observer is null)
+            return;
+        foreach (ref readonly var row in shapes)
+            observer.OnShapeSkipped(row.EntityId, row.Kind, row.Shape.Index, reason);
+    }
+}

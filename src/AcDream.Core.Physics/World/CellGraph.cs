@@ -1,0 +1,207 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// All cells of the world by id, and the retail cell-list search (find_cell_list): which cells a set of
+/// spheres touches, and which of them holds the first sphere's centre.
+/// Not modelled: retail's visibility filter (stab lists) that drops indoor cells not visible from the
+/// current one; the portal walk below reaches only connected cells anyway.
+/// </summary>
+public sealed class CellGraph
+{
+    private readonly Dictionary<uint, Cell> _cells = new();
+
+    /// <summary>Adds a land block's 64 outdoor cells built from its terrain.</summary>
+    public void AddLandblock(Terrain terrain)
+    {
+        ArgumentNullException.ThrowIfNull(terrain);
+        for (uint i = 1; i <= 64; i++)
+        {
+            uint id = (terrain.Landblock << 16) | i;
+            if (_cells.ContainsKey(id))
+                throw new ArgumentException($"landblock 0x{terrain.Landblock:X4}: cell 0x{id:X8} is already in the world.", nameof(terrain));
+        }
+        for (uint i = 1; i <= 64; i++)
+        {
+            uint id = (terrain.Landblock << 16) | i;
+            _cells.Add(id, new LandCell(id, terrain));
+        }
+    }
+
+    /// <summary>Adds an env cell. Its portals may name cells added later.</summary>
+    public void AddEnvCell(EnvCell cell)
+    {
+        ArgumentNullException.ThrowIfNull(cell);
+        if (!_cells.TryAdd(cell.Id, cell))
+            throw new ArgumentException($"cell 0x{cell.Id:X8}: is already in the world.", nameof(cell));
+    }
+
+    /// <summary>Places a building in the outdoor cell at its position; its entrance cells must exist.</summary>
+    public void AddBuilding(Building building)
+    {
+        ArgumentNullException.ThrowIfNull(building);
+        if (Get(building.Position.CellId) is not LandCell land)
+            throw new ArgumentException($"building.position.cell: 0x{building.Position.CellId:X8} is not a known outdoor cell.", nameof(building));
+        foreach (uint id in building.EntranceCells)
+            if (Get(id) is not EnvCell)
+                throw new ArgumentException($"building.entranceCells: 0x{id:X8} is not a known env cell.", nameof(building));
+        if (land.Building is not null)
+            throw new ArgumentException($"building: cell 0x{land.Id:X8} already has a building.", nameof(building));
+        land.Building = building;
+    }
+
+    /// <summary>The cell with this id, or null.</summary>
+    public Cell? Get(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
+
+    /// <summary>The cell with this id; throws naming the id when unknown.</summary>
+    public Cell GetRequired(uint cellId, string field) =>
+        Get(cellId) ?? throw new ArgumentException($"{field}: unknown cell 0x{cellId:X8}.", field);
+
+    /// <summary>Every cell id, for diagnostics and validation.</summary>
+    public IEnumerable<uint> CellIds => _cells.Keys;
+
+    /// <summary>
+    /// Retail find_cell_list: fills <paramref name="cells"/> with the cells the spheres (landblock space of
+    /// <paramref name="position"/>'s cell) touch. When <paramref name="findContaining"/> is set, returns the
+    /// cell holding sphere 0's centre, preferring an indoor cell; otherwise returns null.
+    /// </summary>
+    public Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, SpherePath? path)
+    {
+        cells.Clear();
+        var start = Get(position.CellId);
+        if (!LandDefs.IsLandCell(position.CellId))
+        {
+            if (path is not null) path.HitsInteriorCell = true;
+            if (start is not null) cells.Add(start);
+        }
+        else
+        {
+            AddOutsideCells(position, spheres, cells);
+        }
+        if (start is null || spheres.Length == 0)
+            return null;
+
+        for (int i = 0; i < cells.Count; i++)
+            AddTransitCells(cells[i], position, spheres, cells, path);
+
+        if (!findContaining)
+            return null;
+        Cell? containing = null;
+        for (int i = 0; i < cells.Count; i++)
+        {
+            var cell = cells[i];
+            var point = spheres[0].Center - LandDefs.BlockOffset(position.CellId, cell.Id);
+            bool inside = cell switch
+            {
+                EnvCell env => env.ContainsPoint(point),
+                LandCell land => land.ContainsPoint(point),
+                _ => false,
+            };
+            if (!inside)
+                continue;
+            containing = cell;
+            if (cell is EnvCell)
+            {
+                if (path is not null) path.HitsInteriorCell = true;
+                break;
+            }
+        }
+        return containing;
+    }
+
+    private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path)
+    {
+        if (cell is LandCell land)
+        {
+            AddOutsideCells(position, spheres, cells);
+            if (land.Building is { } building)
+                foreach (uint id in building.EntranceCells)
+                    if (Get(id) is EnvCell entrance)
+                        AddIfSphereInside(entrance, position, spheres, cells, path);
+            return;
+        }
+        if (cell is not EnvCell env)
+            return;
+        bool checkOutside = false;
+        foreach (var portal in env.Portals)
+        {
+            var plane = portal.Polygon.Plane;
+            if (portal.LeadsOutside)
+            {
+                foreach (var sphere in spheres)
+                {
+                    var local = env.Position.Frame.GlobalToLocal(sphere.Center - LandDefs.BlockOffset(position.CellId, env.Id));
+                    float dist = VectorMath.Distance(plane, local);
+                    float reach = sphere.Radius + PhysicsConstants.Epsilon;
+                    if (dist > -reach && dist < reach) { checkOutside = true; break; }
+                }
+                continue;
+            }
+            if (Get(portal.OtherCellId) is EnvCell other)
+                AddIfSphereInside(other, position, spheres, cells, path);
+        }
+        if (checkOutside)
+            AddOutsideCells(position, spheres, cells);
+    }
+
+    private static void AddIfSphereInside(EnvCell env, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path)
+    {
+        var offset = LandDefs.BlockOffset(position.CellId, env.Id);
+        foreach (var sphere in spheres)
+        {
+            if (env.IntersectsSphere(new Sphere(sphere.Center - offset, sphere.Radius)) == BoundingType.Outside)
+                continue;
+            if (path is not null) path.HitsInteriorCell = true;
+            cells.Add(env);
+            return;
+        }
+    }
+
+    /// <summary>
+    /// Retail add_all_outside_cells: the outdoor cell under each sphere centre plus the neighbours the
+    /// sphere reaches across a cell border (check_add_cell_boundary), across landblocks too.
+    /// </summary>
+    private void AddOutsideCells(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells)
+    {
+        uint block = position.CellId >> 16;
+        int blockX = (int)(block >> 8) * 8, blockY = (int)(block & 0xFF) * 8;
+        foreach (var sphere in spheres)
+        {
+            float fx = MathF.Floor(sphere.Center.X / PhysicsConstants.LandCellLength);
+            float fy = MathF.Floor(sphere.Center.Y / PhysicsConstants.LandCellLength);
+            if (!float.IsFinite(fx) || !float.IsFinite(fy))
+                continue;
+            int gx = blockX + (int)fx, gy = blockY + (int)fy;
+            float px = sphere.Center.X - fx * PhysicsConstants.LandCellLength;
+            float py = sphere.Center.Y - fy * PhysicsConstants.LandCellLength;
+            float min = sphere.Radius, max = PhysicsConstants.LandCellLength - sphere.Radius;
+            AddOutsideCell(cells, gx, gy);
+            if (px > max)
+            {
+                AddOutsideCell(cells, gx + 1, gy);
+                if (py > max) AddOutsideCell(cells, gx + 1, gy + 1);
+                if (py < min) AddOutsideCell(cells, gx + 1, gy - 1);
+            }
+            if (px < min)
+            {
+                AddOutsideCell(cells, gx - 1, gy);
+                if (py > max) AddOutsideCell(cells, gx - 1, gy + 1);
+                if (py < min) AddOutsideCell(cells, gx - 1, gy - 1);
+            }
+            if (py > max) AddOutsideCell(cells, gx, gy + 1);
+            if (py < min) AddOutsideCell(cells, gx, gy - 1);
+        }
+    }
+
+    private void AddOutsideCell(CellArray cells, int gx, int gy)
+    {
+        if (gx < 0 || gy < 0 || gx >= 2040 || gy >= 2040)
+            return;
+        uint id = ((uint)(gx >> 3) << 24) | ((uint)(gy >> 3) << 16) | (uint)((gx & 7) * 8 + (gy & 7) + 1);
+        if (Get(id) is { } cell)
+            cells.Add(cell);
+    }
+}

@@ -1,0 +1,66 @@
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// An outdoor 24 m × 24 m cell of a landblock (retail CLandCell): two terrain triangles, and optionally
+/// the <see cref="Building"/> whose shell stands in it.
+/// </summary>
+public sealed class LandCell : Cell
+{
+    private readonly Polygon _first;
+    private readonly Polygon _second;
+
+    /// <summary>Creates land cell <paramref name="id"/> from its landblock's terrain.</summary>
+    public LandCell(uint id, Terrain terrain) : base(id)
+    {
+        uint index = id & 0xFFFF;
+        if (index < 1 || index > 64)
+            throw new System.ArgumentException($"cell 0x{id:X8}: an outdoor cell index must be 1..64.", nameof(id));
+        if ((id >> 16) != terrain.Landblock)
+            throw new System.ArgumentException($"cell 0x{id:X8}: is not in the terrain's landblock 0x{terrain.Landblock:X4}.", nameof(id));
+        int x = (int)((index - 1) / 8), y = (int)((index - 1) % 8);
+        (_first, _second) = terrain.CellTriangles(x, y);
+    }
+
+    /// <summary>The building standing in this cell, or null.</summary>
+    public Building? Building { get; internal set; }
+
+    /// <summary>The terrain triangle under a landblock-local point (by X and Y), or null when outside the cell.</summary>
+    public Polygon? FindTerrainPolygon(Vector3 point)
+    {
+        if (InTriangle2D(_first, point)) return _first;
+        if (InTriangle2D(_second, point)) return _second;
+        return null;
+    }
+
+    /// <summary>Retail point_in_cell for land: the point's X/Y lie on one of the triangles.</summary>
+    public bool ContainsPoint(Vector3 point) => FindTerrainPolygon(point) is not null;
+
+    // Retail point_in_poly2D on the positive side: every edge has the point on its left (or on it).
+    private static bool InTriangle2D(Polygon polygon, Vector3 p)
+    {
+        var v = polygon.Vertices;
+        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
+        {
+            var edge = v[i] - v[j];
+            float cross = edge.X * (p.Y - v[j].Y) - edge.Y * (p.X - v[j].X);
+            if (cross < 0f)
+                return false;
+        }
+        return true;
+    }
+
+    /// <inheritdoc />
+    public override TransitionState FindEnvCollisions(Transition transition)
+    {
+        var path = transition.SpherePath;
+        var blockOffset = LandDefs.BlockOffset(path.CheckPos.CellId, Id);
+        var walkable = FindTerrainPolygon(path.GlobalLowPoint - blockOffset);
+        if (walkable is null)
+            return TransitionState.OK;
+        var check = path.GlobalSphere[0];
+        check.Center -= blockOffset;
+        return transition.ValidateWalkable(check, walkable.Plane, isWater: false, waterDepth: 0f, Id);
+    }
+}

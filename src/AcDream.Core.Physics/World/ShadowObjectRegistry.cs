@@ -1,0 +1,195 @@
+using System;
+using System.Collections.Generic;
+using System.Runtime.InteropServices;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The objects of the world, as flat per-cell lists of <see cref="ShadowEntry"/> rows (retail shadow
+/// objects): one row per collision shape, an object present once in every cell it overlaps.
+/// Single writer: register, move and unregister from one thread while no query runs; queries may run in
+/// parallel when nothing is being modified.
+/// </summary>
+public sealed class ShadowObjectRegistry
+{
+    private sealed class Record
+    {
+        public required ShadowShape[] Shapes;
+        public Position Position;
+        public float Scale;
+        public PhysicsState State;
+        public ShadowFlags Flags;
+        public int CylCount;
+        public int SphereCount;
+        public Sphere LocalBounds;
+        public readonly List<uint> Cells = new(4);
+    }
+
+    private readonly CellGraph _graph;
+    private readonly Dictionary<uint, List<ShadowEntry>> _byCell = new();
+    private readonly Dictionary<uint, Record> _objects = new();
+    private readonly CellArray _scratch = new();
+
+    /// <summary>Creates an empty registry over a world's cells.</summary>
+    public ShadowObjectRegistry(CellGraph graph) => _graph = graph ?? throw new ArgumentNullException(nameof(graph));
+
+    /// <summary>How many objects are registered.</summary>
+    public int Count => _objects.Count;
+
+    /// <summary>True when an object with this id is registered.</summary>
+    public bool Contains(uint entityId) => _objects.ContainsKey(entityId);
+
+    /// <summary>
+    /// Registers an object from its setup. <see cref="PhysicsState.HasPhysicsBsp"/> is set when any part has
+    /// a physics model (retail CacheHasPhysicsBSP) and is also kept when the caller's state has it.
+    /// </summary>
+    public void Register(uint entityId, PhysicsSetup setup, Position position, float scale = 1f,
+        PhysicsState state = PhysicsState.None, ShadowFlags flags = ShadowFlags.None)
+    {
+        ArgumentNullException.ThrowIfNull(setup);
+        var shapes = ShadowShapeBuilder.FromSetup(setup, scale, $"object 0x{entityId:X8}.setup");
+        if (setup.HasPhysicsBsp)
+            state |= PhysicsState.HasPhysicsBsp;
+        Register(entityId, shapes, position, scale, state, flags);
+    }
+
+    /// <summary>Registers an object from shapes already built by <see cref="ShadowShapeBuilder.FromSetup"/>.</summary>
+    public void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
+    {
+        ArgumentNullException.ThrowIfNull(shapes);
+        string name = $"object 0x{entityId:X8}";
+        if (_objects.ContainsKey(entityId))
+            throw new ArgumentException($"{name}: is already registered.", nameof(entityId));
+        for (int i = 0; i < shapes.Length; i++)
+            if (shapes[i] is null)
+                throw new ArgumentException($"{name}.shapes[{i}]: is null.", nameof(shapes));
+        Guard.Positive(scale, $"{name}.scale");
+        position = CheckPosition(position, name);
+
+        var record = new Record { Shapes = (ShadowShape[])shapes.Clone(), Position = position, Scale = scale, State = state, Flags = flags };
+        foreach (var shape in shapes)
+        {
+            if (shape.Kind == ShadowShapeKind.Cylinder) record.CylCount++;
+            if (shape.Kind == ShadowShapeKind.Sphere) record.SphereCount++;
+        }
+        record.LocalBounds = Enclose(shapes);
+        FindCells(record, record.Cells);
+        _objects.Add(entityId, record);
+        AddRows(entityId, record);
+    }
+
+    /// <summary>Moves a registered object; its rows migrate between cells. Unknown ids and cells throw, leaving everything unchanged.</summary>
+    public void Move(uint entityId, Position position)
+    {
+        if (!_objects.TryGetValue(entityId, out var record))
+            throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+        position = CheckPosition(position, $"object 0x{entityId:X8}");
+        var old = record.Position;
+        record.Position = position;
+        var cells = new List<uint>(4);
+        try
+        {
+            FindCells(record, cells);
+        }
+        catch
+        {
+            record.Position = old;
+            throw;
+        }
+        RemoveRows(entityId, record);
+        record.Cells.Clear();
+        record.Cells.AddRange(cells);
+        AddRows(entityId, record);
+    }
+
+    /// <summary>Removes an object; false when it was not registered.</summary>
+    public bool Unregister(uint entityId)
+    {
+        if (!_objects.Remove(entityId, out var record))
+            return false;
+        RemoveRows(entityId, record);
+        return true;
+    }
+
+    /// <summary>The rows of a cell (empty for a cell with no objects). Valid until the registry is next modified.</summary>
+    public ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId) =>
+        _byCell.TryGetValue(cellId, out var rows) ? CollectionsMarshal.AsSpan(rows) : ReadOnlySpan<ShadowEntry>.Empty;
+
+    /// <summary>The cells an object is listed in.</summary>
+    public IReadOnlyList<uint> CellsOf(uint entityId) =>
+        _objects.TryGetValue(entityId, out var record) ? record.Cells : throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+
+    /// <summary>The position an object is registered at.</summary>
+    public Position PositionOf(uint entityId) =>
+        _objects.TryGetValue(entityId, out var record) ? record.Position : throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+
+    private Position CheckPosition(Position position, string name)
+    {
+        Guard.Frame(position.Frame, $"{name}.position");
+        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, $"{name}.position.orientation");
+        _graph.GetRequired(position.CellId, $"{name}.position.cell");
+        return position;
+    }
+
+    private static Sphere Enclose(ShadowShape[] shapes)
+    {
+        if (shapes.Length == 0)
+            return new Sphere(System.Numerics.Vector3.Zero, 0f);
+        var min = new System.Numerics.Vector3(float.MaxValue);
+        var max = new System.Numerics.Vector3(float.MinValue);
+        foreach (var s in shapes)
+        {
+            min = System.Numerics.Vector3.Min(min, s.Bounds.Center - new System.Numerics.Vector3(s.Bounds.Radius));
+            max = System.Numerics.Vector3.Max(max, s.Bounds.Center + new System.Numerics.Vector3(s.Bounds.Radius));
+        }
+        var center = (min + max) * 0.5f;
+        float radius = 0f;
+        foreach (var s in shapes)
+            radius = MathF.Max(radius, System.Numerics.Vector3.Distance(center, s.Bounds.Center) + s.Bounds.Radius);
+        return new Sphere(center, radius);
+    }
+
+    /// <summary>The cells the object's bounding sphere touches, starting from its own cell (retail calc_cross_cells).</summary>
+    private void FindCells(Record record, List<uint> cells)
+    {
+        cells.Clear();
+        var bounds = new Sphere(record.Position.LocalToGlobal(record.LocalBounds.Center), record.LocalBounds.Radius);
+        ReadOnlySpan<Sphere> one = [bounds];
+        _graph.FindCellList(record.Position, one, _scratch, findContaining: false, path: null);
+        bool hasOwn = false;
+        for (int i = 0; i < _scratch.Count; i++)
+        {
+            cells.Add(_scratch[i].Id);
+            hasOwn |= _scratch[i].Id == record.Position.CellId;
+        }
+        if (!hasOwn)
+            cells.Insert(0, record.Position.CellId);
+    }
+
+    private void AddRows(uint entityId, Record record)
+    {
+        foreach (uint cellId in record.Cells)
+        {
+            if (!_byCell.TryGetValue(cellId, out var rows))
+                _byCell.Add(cellId, rows = new List<ShadowEntry>());
+            foreach (var shape in record.Shapes)
+                rows.Add(new ShadowEntry(entityId, shape, record.Position, record.Scale, record.State, record.Flags, record.CylCount, record.SphereCount));
+        }
+    }
+
+    private void RemoveRows(uint entityId, Record record)
+    {
+        foreach (uint cellId in record.Cells)
+        {
+            if (!_byCell.TryGetValue(cellId, out var rows))
+                continue;
+            int write = 0;
+            for (int read = 0; read < rows.Count; read++)
+                if (rows[read].EntityId != entityId)
+                    rows[write++] = rows[read];
+            rows.RemoveRange(write, rows.Count - write);
+            if (rows.Count == 0)
+                _byCell.Remove(cellId);
+        }
+    }
+}
