@@ -103,6 +103,26 @@ public sealed class SpherePath
     /// <summary>Placement may slide out of overlaps.</summary>
     public bool PlacementAllowsSliding = true;
 
+    /// <summary>Clears every per-move field (keeps the sphere storage), ready for a new transition.</summary>
+    public void Reset()
+    {
+        NumSphere = 0;
+        LocalSphere = default; GlobalSphere = default; LocalSpaceSphere = default;
+        LocalSpaceCurrCenter = default; GlobalCurrCenter = default;
+        LocalLowPoint = GlobalLowPoint = LocalSpaceLowPoint = LocalSpaceZ = GlobalOffset = default;
+        LocalSpacePos = BeginPos = EndPos = CurPos = CheckPos = BackupCheckPos = WalkablePos = default;
+        BeginCell = CurCell = CheckCell = BackupCell = null;
+        HasBeginPos = false;
+        StepUp = Collide = StepDown = ObstructionEthereal = HitsInteriorCell = BuildingCheck = false;
+        CheckWalkable = CellArrayValid = NegStepUp = NegPolyHit = false;
+        StepUpNormal = NegCollisionNormal = WalkableUp = default;
+        InsertType = Backup = InsertType.Transition;
+        WalkableAllowance = WalkInterp = StepDownAmt = WalkableScale = 0f;
+        WalkableCheckPos = default;
+        Walkable = null;
+        PlacementAllowsSliding = true;
+    }
+
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
     public void InitPath(Cell? beginCell, Position? beginPos, Position endPos)
     {

@@ -1,0 +1,139 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>What a mover is: its spheres, step heights and flags. Validated on construction; immutable.</summary>
+public sealed class MoverDescription
+{
+    private readonly Sphere[] _spheres;
+
+    /// <summary>Creates a mover description.</summary>
+    /// <param name="objectId">The mover's retail object id (it never collides with itself); 0 for none.</param>
+    /// <param name="spheres">One or two spheres in the mover's space (retail uses at most two).</param>
+    /// <param name="stepUpHeight">How high it may step up, metres.</param>
+    /// <param name="stepDownHeight">How far it steps down to stay grounded, metres.</param>
+    /// <param name="physicsState">Its PhysicsState (Gravity, EdgeSlide, Missile, Ethereal…).</param>
+    /// <param name="flags">Its ObjectInfo bits that describe what it is (IsPlayer, IsPK, IsViewer…); Contact and OnWalkable come from <see cref="MoverState"/>.</param>
+    /// <param name="scale">Its scale, applied to spheres and step heights.</param>
+    /// <param name="targetId">A missile's target id, or 0.</param>
+    public MoverDescription(uint objectId, ReadOnlySpan<Sphere> spheres, float stepUpHeight, float stepDownHeight,
+        PhysicsState physicsState = PhysicsState.Gravity, ObjectInfoState flags = ObjectInfoState.None, float scale = 1f, uint targetId = 0)
+    {
+        if (spheres.Length < 1 || spheres.Length > 2)
+            throw new ArgumentException($"mover.spheres: a mover has one or two spheres, got {spheres.Length}.", nameof(spheres));
+        for (int i = 0; i < spheres.Length; i++)
+            Guard.Sphere(spheres[i], $"mover.spheres[{i}]");
+        Guard.NonNegative(stepUpHeight, "mover.stepUpHeight");
+        Guard.NonNegative(stepDownHeight, "mover.stepDownHeight");
+        Guard.Positive(scale, "mover.scale");
+        if ((flags & (ObjectInfoState.Contact | ObjectInfoState.OnWalkable)) != 0)
+            throw new ArgumentException("mover.flags: Contact and OnWalkable are per-frame state; pass them in MoverState.", nameof(flags));
+        ObjectId = objectId;
+        _spheres = spheres.ToArray();
+        StepUpHeight = stepUpHeight;
+        StepDownHeight = stepDownHeight;
+        PhysicsState = physicsState;
+        Flags = flags;
+        Scale = scale;
+        TargetId = targetId;
+    }
+
+    /// <summary>
+    /// The retail player (Setup 0x02000001): spheres of radius 0.48 at heights 0.475 and 1.35, step-up 0.6,
+    /// step-down 0.04 (the seed's door tests), gravity, edge slide, a player.
+    /// </summary>
+    public static MoverDescription Player(uint objectId = 0x50000001) =>
+        new(objectId, [new Sphere(new Vector3(0, 0, 0.475f), 0.48f), new Sphere(new Vector3(0, 0, 1.35f), 0.48f)],
+            0.6f, 0.04f, PhysicsState.Gravity | PhysicsState.EdgeSlide, ObjectInfoState.IsPlayer);
+
+    /// <summary>The mover's id.</summary>
+    public uint ObjectId { get; }
+    /// <summary>The spheres, mover space, unscaled.</summary>
+    public ReadOnlySpan<Sphere> Spheres => _spheres;
+    /// <summary>Step-up height, unscaled.</summary>
+    public float StepUpHeight { get; }
+    /// <summary>Step-down height, unscaled.</summary>
+    public float StepDownHeight { get; }
+    /// <summary>PhysicsState bits.</summary>
+    public PhysicsState PhysicsState { get; }
+    /// <summary>ObjectInfo bits describing the mover.</summary>
+    public ObjectInfoState Flags { get; }
+    /// <summary>Scale.</summary>
+    public float Scale { get; }
+    /// <summary>Missile target id or 0.</summary>
+    public uint TargetId { get; }
+}
+
+/// <summary>
+/// What a mover carries from one frame to the next: where it is, and its contact with the ground
+/// (retail keeps these on the physics object between transitions).
+/// </summary>
+public struct MoverState
+{
+    /// <summary>The position (cell and landblock-local frame).</summary>
+    public Position Position;
+    /// <summary>The mover touched a contact plane at the end of the last frame.</summary>
+    public bool Contact;
+    /// <summary>That plane was walkable.</summary>
+    public bool OnWalkable;
+    /// <summary>The last contact plane (valid when it was ever set).</summary>
+    public Plane ContactPlane;
+    /// <summary>The cell whose landblock space <see cref="ContactPlane"/> is in; 0 when no plane is known.</summary>
+    public uint ContactPlaneCellId;
+    /// <summary>The contact plane is water.</summary>
+    public bool ContactPlaneIsWater;
+    /// <summary>The mover was sliding along <see cref="SlidingNormal"/>.</summary>
+    public bool SlidingNormalValid;
+    /// <summary>The sliding normal.</summary>
+    public Vector3 SlidingNormal;
+
+    /// <summary>A mover in the air (no known ground) at a position.</summary>
+    public static MoverState Airborne(Position position) => new() { Position = position };
+
+    /// <summary>A mover standing on a horizontal floor at height <paramref name="floorZ"/> (landblock space).</summary>
+    public static MoverState OnFloor(Position position, float floorZ) => new()
+    {
+        Position = position,
+        Contact = true,
+        OnWalkable = true,
+        ContactPlane = new Plane(Vector3.UnitZ, -floorZ),
+        ContactPlaneCellId = position.CellId,
+    };
+}
+
+/// <summary>The outcome of one frame of one mover.</summary>
+public readonly struct MoveResult
+{
+    internal MoveResult(bool succeeded, MoverState next, TransitionState lastState, bool collisionNormalValid, Vector3 collisionNormal,
+        bool collidedWithEnvironment, ReadOnlyMemory<uint> collidedObjects, uint lastCollidedObject)
+    {
+        Succeeded = succeeded;
+        Next = next;
+        LastState = lastState;
+        CollisionNormalValid = collisionNormalValid;
+        CollisionNormal = collisionNormal;
+        CollidedWithEnvironment = collidedWithEnvironment;
+        CollidedObjects = collidedObjects;
+        LastCollidedObject = lastCollidedObject;
+    }
+
+    /// <summary>False when retail would refuse the move (no motion possible, too many sub-steps); the mover stays put.</summary>
+    public bool Succeeded { get; }
+    /// <summary>The mover's state for the next frame: resolved position and cell, contact, walkable, sliding normal.</summary>
+    public MoverState Next { get; }
+    /// <summary>The transition's result (OK when the move was accepted).</summary>
+    public TransitionState LastState { get; }
+    /// <summary>A collision normal was recorded.</summary>
+    public bool CollisionNormalValid { get; }
+    /// <summary>The collision normal.</summary>
+    public Vector3 CollisionNormal { get; }
+    /// <summary>The mover hit cell geometry, terrain or a static object.</summary>
+    public bool CollidedWithEnvironment { get; }
+    /// <summary>The objects collided with. Backed by the engine's buffer: valid until its next call.</summary>
+    public ReadOnlyMemory<uint> CollidedObjects { get; }
+    /// <summary>The last object whose collision was not OK, or 0.</summary>
+    public uint LastCollidedObject { get; }
+    /// <summary>The resolved position.</summary>
+    public Position Position => Next.Position;
+}

@@ -1,0 +1,117 @@
+using System;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// The facade a game client or server calls once per frame per mover: a requested target in, the
+/// resolved position and contact state out, exactly as the retail transition resolves it.
+/// One engine per thread: it reuses one <see cref="Transition"/> and allocates nothing per call once warm.
+/// The world may be shared by engines on several threads while nobody modifies it.
+/// </summary>
+public sealed class PhysicsEngine
+{
+    private readonly Transition _transition;
+    private uint[] _collided = new uint[8];
+
+    /// <summary>Creates an engine over a world.</summary>
+    public PhysicsEngine(PhysicsWorld world) => _transition = new Transition(world);
+
+    /// <summary>The world.</summary>
+    public PhysicsWorld World => _transition.World;
+
+    /// <summary>Structured diagnostics; null (default) costs nothing.</summary>
+    public ITransitionObserver? Observer
+    {
+        get => _transition.Observer;
+        set => _transition.Observer = value;
+    }
+
+    /// <summary>
+    /// Moves a mover from <paramref name="state"/>'s position towards <paramref name="target"/> (a position
+    /// in the same or a neighbouring landblock's frame, labelled with the start cell or any cell of the
+    /// target's landblock). Throws <see cref="ArgumentException"/> for non-finite input or unknown cells,
+    /// before anything is changed.
+    /// </summary>
+    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
+    {
+        ArgumentNullException.ThrowIfNull(mover);
+        Guard.Frame(state.Position.Frame, "state.position");
+        Guard.Frame(target.Frame, "target");
+        var begin = state.Position;
+        begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
+        target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
+        var cell = _transition.World.Cells.GetRequired(begin.CellId, "state.position.cell");
+        if (state.Contact || state.ContactPlaneCellId != 0)
+        {
+            Guard.Finite(state.ContactPlane.Normal, "state.contactPlane.normal");
+            Guard.Finite(state.ContactPlane.D, "state.contactPlane.d");
+        }
+        if (state.SlidingNormalValid)
+            Guard.Finite(state.SlidingNormal, "state.slidingNormal");
+
+        var t = _transition;
+        Prepare(t, mover, state);
+        t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
+        t.SpherePath.InitPath(cell, begin, target);
+        bool ok = t.FindTransitionalPosition();
+        return Collect(t, ok, state);
+    }
+
+    private static void Prepare(Transition t, MoverDescription mover, in MoverState state)
+    {
+        t.SpherePath.Reset();
+        t.CollisionInfo.Reset();
+        var info = t.ObjectInfo;
+        info.ObjectId = mover.ObjectId;
+        info.PhysicsState = mover.PhysicsState;
+        info.State = mover.Flags;
+        if ((mover.PhysicsState & PhysicsState.EdgeSlide) != 0)
+            info.State |= ObjectInfoState.EdgeSlide;
+        info.Scale = mover.Scale;
+        info.StepUpHeight = mover.StepUpHeight * mover.Scale;
+        info.StepDownHeight = mover.StepDownHeight * mover.Scale;
+        info.Ethereal = (mover.PhysicsState & PhysicsState.Ethereal) != 0;
+        info.StepDown = (mover.PhysicsState & PhysicsState.Missile) == 0;
+        info.TargetId = mover.TargetId;
+        if (state.Contact)
+        {
+            t.InitContactPlane(state.ContactPlaneCellId, state.ContactPlane, state.ContactPlaneIsWater);
+            info.State |= ObjectInfoState.Contact;
+            if (state.OnWalkable)
+                info.State |= ObjectInfoState.OnWalkable;
+        }
+        else if (state.ContactPlaneCellId != 0)
+        {
+            t.InitLastKnownContactPlane(state.ContactPlaneCellId, state.ContactPlane, state.ContactPlaneIsWater);
+        }
+        if (state.SlidingNormalValid)
+            t.InitSlidingNormal(state.SlidingNormal);
+    }
+
+    private MoveResult Collect(Transition t, bool ok, in MoverState previous)
+    {
+        var ci = t.CollisionInfo;
+        var path = t.SpherePath;
+        var next = previous;
+        if (ok)
+        {
+            next.Position = path.CurPos;
+            if (path.CurCell is not null)
+                next.Position.CellId = path.CurCell.Id;
+            next.ContactPlane = ci.ContactPlane;
+            next.ContactPlaneCellId = ci.ContactPlaneCellId;
+            next.ContactPlaneIsWater = ci.ContactPlaneIsWater;
+            next.Contact = ci.ContactPlaneValid;
+            next.OnWalkable = ci.ContactPlaneValid && ci.ContactPlane.Normal.Z >= PhysicsConstants.FloorZ;
+            next.SlidingNormalValid = ci.SlidingNormalValid;
+            next.SlidingNormal = ci.SlidingNormal;
+        }
+        int count = ci.CollidedObjects.Count;
+        if (_collided.Length < count)
+            _collided = new uint[Math.Max(count, _collided.Length * 2)];
+        ci.CollidedObjects.CopyTo(_collided);
+        return new MoveResult(ok, next, ok ? TransitionState.OK : TransitionState.Collided, ci.CollisionNormalValid, ci.CollisionNormal,
+            ci.CollidedWithEnvironment, new ReadOnlyMemory<uint>(_collided, 0, count), ci.LastCollidedObject);
+    }
+}
