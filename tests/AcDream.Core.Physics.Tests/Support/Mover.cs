@@ -1,0 +1,49 @@
+using AcDream.Core.Physics;
+
+namespace AcDream.Core.Physics.Tests.Support;
+
+/// <summary>A mover walked frame by frame through a world: the apparatus side of the tests.</summary>
+internal sealed class Mover
+{
+    private readonly PhysicsEngine _engine;
+
+    public Mover(PhysicsWorld world, MoverDescription description, MoverState start)
+    {
+        _engine = new PhysicsEngine(world);
+        Description = description;
+        State = start;
+    }
+
+    public MoverDescription Description { get; }
+    public MoverState State { get; private set; }
+    public Vector3 Origin => State.Position.Origin;
+    public List<Frame> Frames { get; } = new();
+    public TransitionEventLog? Log { get; private set; }
+
+    public Mover WithLog()
+    {
+        Log = new TransitionEventLog();
+        _engine.Observer = Log;
+        return this;
+    }
+
+    public sealed record Frame(Vector3 Before, Vector3 Requested, Vector3 After, uint Cell, MoveResult Result, uint[] Collided);
+
+    /// <summary>Requests the mover's origin + offset (same cell label, same orientation) and applies the result.</summary>
+    public MoveResult Step(Vector3 offset)
+    {
+        var target = State.Position;
+        target.Frame.Origin += offset;
+        var before = Origin;
+        var result = _engine.Resolve(Description, State, target);
+        State = result.Next;
+        Frames.Add(new Frame(before, offset, Origin, State.Position.CellId, result, result.CollidedObjects.ToArray()));
+        return result;
+    }
+
+    public void Walk(Vector3 offsetPerFrame, int frames)
+    {
+        for (int i = 0; i < frames; i++)
+            Step(offsetPerFrame);
+    }
+}
