@@ -260,25 +260,23 @@ public static class PolygonQuery
 
     /// <summary>
     /// Retail CPolygon::point_in_poly2D: the point-in-polygon test in the XY plane only (used for terrain).
-    /// With <see cref="Sidedness.Positive"/> the polygon must wind clockwise seen from +Z around the point
-    /// (every 2D edge cross product ≤ 0); with any other side, counter-clockwise (≥ 0). Points on an edge
-    /// count as inside. Retail walks the edges backwards from the last vertex; the order does not matter
-    /// for the answer.
+    /// With <see cref="Sidedness.Positive"/> the point must be on the left of every edge (a polygon wound
+    /// counter-clockwise seen from +Z holds it); with any other side, on the right of every edge (clockwise).
+    /// Points on an edge count as inside. Retail walks the edges backwards from the last vertex; the order
+    /// does not change the answer.
     /// </summary>
     public static bool PointInPoly2D(Polygon polygon, Vector3 point, Sidedness side)
     {
         var vertices = polygon.Vertices;
-        var next = vertices[0];
+        var end = vertices[0];
         for (int i = vertices.Length - 1; i >= 0; i--)
         {
-            var current = vertices[i];
-            // 2D cross of (next − current) with (point − current), written out as retail does.
-            float ey = next.Y - current.Y;
-            float ex = current.X - next.X;
-            float cross = -(ey * current.X) - ex * current.Y + ex * point.Y + ey * point.X;
-            if (side == Sidedness.Positive ? cross > 0f : cross < 0f)
+            var start = vertices[i];
+            // Z of the 2D cross product edge × (point − start): positive when the point is left of the edge.
+            float cross = (end.X - start.X) * (point.Y - start.Y) - (end.Y - start.Y) * (point.X - start.X);
+            if (side == Sidedness.Positive ? cross < 0f : cross > 0f)
                 return false;
-            next = current;
+            end = start;
         }
         return true;
     }
