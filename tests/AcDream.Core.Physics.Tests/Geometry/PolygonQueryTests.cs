@@ -90,6 +90,15 @@ public class PolygonQueryTests
         Assert.Equal(expected, PolygonQuery.PolygonHitsSphere(Floor(), new Sphere(new Vector3(x, y, z), 0.5f), ref contact));
     }
 
+    [Theory]
+    [InlineData(-1e-5f, true)]
+    [InlineData(+1e-5f, false)]
+    public void SinglePassPolygonHitsSphere_SameEpsilonTolerance(float delta, bool expected)
+    {
+        var contact = Vector3.Zero;
+        Assert.Equal(expected, PolygonQuery.PolygonHitsSphere(Floor(), new Sphere(new Vector3(0.3f, 0, 0.5f - Eps + delta), 0.5f), ref contact));
+    }
+
     [Fact]
     public void PosHitsSphere_CountsOnlyMovesIntoTheFront_ButRecordsTheGrazedPolygon()
     {
