@@ -57,7 +57,7 @@ internal static class BoxFixtures
     /// </summary>
     public static Transition MakeTransition(Vector3 from, Vector3 to, float radius, bool twoSpheres = false)
     {
-        var t = new Transition();
+        var t = new Transition(new PhysicsWorld());
         var path = t.SpherePath;
         Span<Sphere> spheres = stackalloc Sphere[2];
         spheres[0] = new Sphere(Vector3.Zero, radius);
