@@ -29,27 +29,13 @@ public sealed class LandCell : Cell
     /// <summary>The terrain triangle under a landblock-local point (by X and Y), or null when outside the cell.</summary>
     public Polygon? FindTerrainPolygon(Vector3 point)
     {
-        if (InTriangle2D(_first, point)) return _first;
-        if (InTriangle2D(_second, point)) return _second;
+        if (PolygonQuery.PointInPoly2D(_first, point, Sidedness.Positive)) return _first;
+        if (PolygonQuery.PointInPoly2D(_second, point, Sidedness.Positive)) return _second;
         return null;
     }
 
     /// <summary>Retail point_in_cell for land: the point's X/Y lie on one of the triangles.</summary>
     public bool ContainsPoint(Vector3 point) => FindTerrainPolygon(point) is not null;
-
-    // Retail point_in_poly2D on the positive side: every edge has the point on its left (or on it).
-    private static bool InTriangle2D(Polygon polygon, Vector3 p)
-    {
-        var v = polygon.Vertices;
-        for (int i = 0, j = v.Length - 1; i < v.Length; j = i++)
-        {
-            var edge = v[i] - v[j];
-            float cross = edge.X * (p.Y - v[j].Y) - edge.Y * (p.X - v[j].X);
-            if (cross < 0f)
-                return false;
-        }
-        return true;
-    }
 
     /// <inheritdoc />
     public override TransitionState FindEnvCollisions(Transition transition)
