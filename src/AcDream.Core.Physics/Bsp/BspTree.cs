@@ -181,8 +181,8 @@ public sealed class BspTree
 
     private static void CheckPlane(Plane plane, string field)
     {
-        Guard.Finite(plane.Normal, field + ".normal");
-        Guard.Finite(plane.D, field + ".d");
+        Guard.Finite(plane.Normal, field, ".normal");
+        Guard.Finite(plane.D, field, ".d");
         if (plane.Normal.LengthSquared() < 1e-12f)
             throw new ArgumentException($"{field}.normal: has zero length.", field);
     }

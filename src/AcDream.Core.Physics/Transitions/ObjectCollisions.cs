@@ -17,8 +17,9 @@ public static class ObjectCollisions
         (targetState & PhysicsState.HasPhysicsBsp) != 0 && !missileIgnore && !exemption;
 
     /// <summary>
-    /// The PvP exemption: two players pass through each other unless either is impenetrable or they are
-    /// both PK or both PK-lite (ACE PhysicsObj.FindObjCollisions).
+    /// The PvP exemption: two players pass through each other (nothing is tested) unless either is
+    /// impenetrable or they are both PK or both PK-lite (retail CPhysicsObj::FindObjCollisions, acclient
+    /// 0x0050F050; ACE names it `exemption`).
     /// </summary>
     public static bool PvpExemption(ObjectInfoState mover, ShadowFlags target)
     {
@@ -34,46 +35,46 @@ public static class ObjectCollisions
     }
 
     /// <summary>
-    /// Retail OBJECTINFO::missile_ignore (ACE's two-way reading): a missile target is ignored by a
-    /// non-player mover, and by a player unless it is the missile's target; a missile mover ignores
-    /// ethereal or (when it has a target) creature objects other than its target.
+    /// Retail OBJECTINFO::missile_ignore: a missile object is ignored by every mover; a missile mover
+    /// ignores any weenie object other than its target that is ethereal, or (when it has a target) is a
+    /// creature. ACE's "two-way" variant, which lets a player be hit by a missile aimed at it, is not used.
     /// </summary>
     public static bool MissileIgnore(ObjectInfo mover, uint targetId, PhysicsState targetState, ShadowFlags targetFlags)
     {
         if ((targetState & PhysicsState.Missile) != 0)
-            return !mover.IsPlayer;
-        if ((mover.PhysicsState & PhysicsState.Missile) != 0 && targetId != mover.TargetId)
-            return (targetState & PhysicsState.Ethereal) != 0 || (mover.TargetId != 0 && (targetFlags & ShadowFlags.IsCreature) != 0);
-        return false;
+            return true;
+        if ((mover.PhysicsState & PhysicsState.Missile) == 0 || targetId == mover.TargetId)
+            return false;
+        bool weenie = (targetFlags & (ShadowFlags.HasWeenie | ShadowFlags.IsPlayer | ShadowFlags.IsCreature)) != 0;
+        if (!weenie)
+            return false;
+        return (targetState & PhysicsState.Ethereal) != 0 || (mover.TargetId != 0 && (targetFlags & ShadowFlags.IsCreature) != 0);
     }
 
     /// <summary>
-    /// Collides with every object in a cell's rows, last registered first (ACE iterates a cell's shadow
-    /// list from the end); the first non-OK result returns. Rows of one object are contiguous.
+    /// Collides with every object in a cell's rows, in list order (retail CObjCell::find_obj_collisions
+    /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
+    /// non-OK result returns. Rows of one object are contiguous. An initial placement tests no object.
     /// </summary>
     public static TransitionState FindInCell(Transition transition, ReadOnlySpan<ShadowEntry> rows)
     {
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             return TransitionState.OK;
         uint self = transition.ObjectInfo.ObjectId;
-        int end = rows.Length;
-        while (end > 0)
+        int start = 0;
+        while (start < rows.Length)
         {
-            uint id = rows[end - 1].EntityId;
-            int start = end - 1;
-            while (start > 0 && rows[start - 1].EntityId == id)
-                start--;
+            uint id = rows[start].EntityId;
+            int end = start + 1;
+            while (end < rows.Length && rows[end].EntityId == id)
+                end++;
             if (id != self || self == 0)
             {
                 var state = FindObjectCollisions(transition, rows.Slice(start, end - start));
                 if (state != TransitionState.OK)
-                {
-                    // ACE: an ethereal object does not block a placement.
-                    if (!(transition.SpherePath.InsertType == InsertType.Placement && (rows[start].State & PhysicsState.Ethereal) != 0))
-                        return state;
-                }
+                    return state;
             }
-            end = start;
+            start = end;
         }
         return TransitionState.OK;
     }

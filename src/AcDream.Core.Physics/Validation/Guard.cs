@@ -3,60 +3,66 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics;
 
-/// <summary>Input checks at the library's boundary. Each throws an <see cref="ArgumentException"/> naming the field.</summary>
+/// <summary>
+/// Input checks at the library's boundary. Each throws an <see cref="ArgumentException"/> naming the
+/// field. A field name is given as a prefix and an optional suffix so that nothing is concatenated (and
+/// nothing allocated) unless the check fails: these run on every engine call.
+/// </summary>
 internal static class Guard
 {
-    public static void Finite(float value, string field)
+    private static string Name(string field, string? suffix) => suffix is null ? field : field + suffix;
+
+    public static void Finite(float value, string field, string? suffix = null)
     {
         if (!float.IsFinite(value))
-            throw new ArgumentException($"{field}: must be a finite number, got {value}.", field);
+            throw new ArgumentException($"{Name(field, suffix)}: must be a finite number, got {value}.", Name(field, suffix));
     }
 
-    public static void Finite(Vector3 value, string field)
+    public static void Finite(Vector3 value, string field, string? suffix = null)
     {
         if (!float.IsFinite(value.X) || !float.IsFinite(value.Y) || !float.IsFinite(value.Z))
-            throw new ArgumentException($"{field}: must be finite, got {value}.", field);
+            throw new ArgumentException($"{Name(field, suffix)}: must be finite, got {value}.", Name(field, suffix));
     }
 
-    public static void Positive(float value, string field)
+    public static void Positive(float value, string field, string? suffix = null)
     {
         if (!(value > 0f) || !float.IsFinite(value))
-            throw new ArgumentException($"{field}: must be a finite number greater than zero, got {value}.", field);
+            throw new ArgumentException($"{Name(field, suffix)}: must be a finite number greater than zero, got {value}.", Name(field, suffix));
     }
 
-    public static void NonNegative(float value, string field)
+    public static void NonNegative(float value, string field, string? suffix = null)
     {
         if (!(value >= 0f) || !float.IsFinite(value))
-            throw new ArgumentException($"{field}: must be a finite number of zero or more, got {value}.", field);
+            throw new ArgumentException($"{Name(field, suffix)}: must be a finite number of zero or more, got {value}.", Name(field, suffix));
     }
 
     /// <summary>Checks a rotation and returns it normalized; a zero-length or non-finite quaternion is refused.</summary>
-    public static Quaternion Rotation(Quaternion q, string field)
+    public static Quaternion Rotation(Quaternion q, string field, string? suffix = null)
     {
         if (!float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W))
-            throw new ArgumentException($"{field}: quaternion must be finite, got {q}.", field);
+            throw new ArgumentException($"{Name(field, suffix)}: quaternion must be finite, got {q}.", Name(field, suffix));
         float length = q.Length();
         if (length < 1e-6f)
-            throw new ArgumentException($"{field}: quaternion has zero length.", field);
+            throw new ArgumentException($"{Name(field, suffix)}: quaternion has zero length.", Name(field, suffix));
         return Quaternion.Multiply(q, 1f / length);
     }
 
     public static void Frame(in Frame frame, string field)
     {
-        Finite(frame.Origin, field + ".origin");
-        Rotation(frame.Orientation, field + ".orientation");
+        Finite(frame.Origin, field, ".origin");
+        Rotation(frame.Orientation, field, ".orientation");
     }
 
     public static void Sphere(in Sphere sphere, string field)
     {
-        Finite(sphere.Center, field + ".center");
-        Positive(sphere.Radius, field + ".radius");
+        Finite(sphere.Center, field, ".center");
+        Positive(sphere.Radius, field, ".radius");
     }
 
     public static void CylSphere(in CylSphere cyl, string field)
     {
-        Finite(cyl.LowPoint, field + ".lowPoint");
-        Positive(cyl.Radius, field + ".radius");
-        NonNegative(cyl.Height, field + ".height");
+        Finite(cyl.LowPoint, field, ".lowPoint");
+        Positive(cyl.Radius, field, ".radius");
+        NonNegative(cyl.Height, field, ".height");
     }
 }

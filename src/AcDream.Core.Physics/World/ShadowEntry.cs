@@ -18,6 +18,11 @@ public enum ShadowFlags : byte
     IsPK = 0x8,
     /// <summary>The object is a PK-lite player.</summary>
     IsPKLite = 0x10,
+    /// <summary>
+    /// The object is a game object with a weenie (anything a server spawns), as opposed to static scenery
+    /// from the landblock's data. Retail's missile rules only ignore weenie objects.
+    /// </summary>
+    HasWeenie = 0x20,
 }
 
 /// <summary>

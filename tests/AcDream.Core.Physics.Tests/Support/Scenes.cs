@@ -25,6 +25,21 @@ internal static class Scenes
         return world;
     }
 
+    /// <summary>How deep the retail player's spheres at <paramref name="origin"/> reach into the door slab (≤ 0 when clear).</summary>
+    public static float SlabPenetration(Vector3 origin)
+    {
+        var min = DoorOrigin + new Vector3(-SlabHalfWidth, SlabFront, 0);
+        var max = DoorOrigin + new Vector3(SlabHalfWidth, SlabBack, SlabHeight);
+        float worst = float.NegativeInfinity;
+        foreach (float z in new[] { 0.475f, 1.35f })
+        {
+            var c = origin + new Vector3(0, 0, z);
+            var closest = Vector3.Clamp(c, min, max);
+            worst = MathF.Max(worst, PlayerRadius - Vector3.Distance(c, closest));
+        }
+        return worst;
+    }
+
     public static Mover Player(PhysicsWorld world, float x, float y, MoverDescription? description = null)
     {
         var position = TestGeometry.At(x, y, 0);

@@ -27,9 +27,11 @@ internal static class TestGeometry
     /// A box as an explicit physics BSP: a chain of the six face planes (front = outside, an empty leaf),
     /// ending in a solid leaf that holds the faces.
     /// </summary>
-    public static BspTree BoxTree(Vector3 min, Vector3 max)
+    public static BspTree BoxTree(Vector3 min, Vector3 max, int[]? faceOrder = null)
     {
         var faces = BoxFaces(min, max);
+        if (faceOrder is not null)
+            faces = faceOrder.Select(i => faces[i]).ToArray();
         var nodes = new List<BspNodeData>();
         for (int i = 0; i < 6; i++)
         {
@@ -44,7 +46,10 @@ internal static class TestGeometry
     /// <summary>A door-like setup: a slab part, a foot cylsphere and a base sphere (the seed's Holtburg door look-alike).</summary>
     public static PhysicsSetup DoorSetup()
     {
-        var slab = new PhysicsModel(BoxTree(new Vector3(-0.5f, -0.009f, 0f), new Vector3(0.5f, 0.252f, 2.2f)), name: "door slab");
+        // A leaf's polygons are tried in order and the first hit wins (retail BSPLEAF), so a sphere that
+        // overlaps the slab near a vertical edge reports whichever face comes first. The door lists its
+        // broad faces (front -Y, back +Y) before the narrow sides, top and bottom.
+        var slab = new PhysicsModel(BoxTree(new Vector3(-0.5f, -0.009f, 0f), new Vector3(0.5f, 0.252f, 2.2f), [3, 2, 0, 1, 4, 5]), name: "door slab");
         return new PhysicsSetup
         {
             Parts = [new SetupPart(slab, Frame.Identity)],
