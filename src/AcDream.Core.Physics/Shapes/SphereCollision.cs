@@ -379,6 +379,8 @@ public static class SphereCollision
         if (!path.IsWalkableAllowable(restNormal.Z))
             return TransitionState.OK;
 
+        // Retail quirk: the plane passes through the bottom of the check sphere before it is lifted, not
+        // the rest point (CSphere.c intersects_sphere, acclient.c:359156: the offset is added afterwards).
         Vector3 restPoint = first.Center - restNormal * first.Radius;
         SetRetailContactPlane(transition, restNormal, restPoint);
         path.WalkInterp = walkInterp;
