@@ -393,7 +393,7 @@ public static class SphereCollision
         => checkCenter - current + path.CurToCheckBlockOffset();
 
     /// <summary>The contact plane's normal, or the last known one when there is no contact plane.</summary>
-    internal static Vector3 ContactNormal(CollisionInfo collisions)
+    private static Vector3 ContactNormal(CollisionInfo collisions)
         => collisions.ContactPlaneValid ? collisions.ContactPlane.Normal : collisions.LastKnownContactPlane.Normal;
 
     /// <summary>

@@ -206,4 +206,15 @@ public class CylSphereCollisionTests
         Assert.Equal(1f, placed.Radius);
         Assert.Equal(2f, placed.Height);
     }
+
+    [Fact]
+    public void SecondSphere_IsTestedWithSphereZerosRadiusSum()
+    {
+        // A cylinder r 0.5, h 1 from z 1.2, 0.9 away in XY. Sphere 0 (r 0.5 at z 0.5) is below its slab;
+        // sphere 1 (r 0.3 at z 1.5) overlaps the slab and is 0.9 from the axis: apart by its own sum 0.8,
+        // but retail uses sphere 0's radsum 0.5 - EPSILON + 0.5 (CCylSphere::intersects_sphere).
+        var t = TwoSpherePlacement(Vector3.Zero);
+        Assert.Equal(TransitionState.Collided, CylSphereCollision.IntersectsSphere(new CylSphere(new Vector3(0.9f, 0, 1.2f), 0.5f, 1f), t));
+        Assert.Equal(TransitionState.OK, CylSphereCollision.IntersectsSphere(new CylSphere(new Vector3(1.01f, 0, 1.2f), 0.5f, 1f), t));
+    }
 }

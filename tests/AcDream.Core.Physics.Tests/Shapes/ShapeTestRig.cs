@@ -20,6 +20,16 @@ internal static class ShapeTestRig
         return transition;
     }
 
+    /// <summary>A placement of a two-sphere mover: sphere 0 radius 0.5 at z 0.5, sphere 1 radius 0.3 at z 1.5.</summary>
+    public static Transition TwoSpherePlacement(Vector3 origin)
+    {
+        var transition = new Transition();
+        transition.SpherePath.InitSphere(new[] { new Sphere(new Vector3(0, 0, 0.5f), 0.5f), new Sphere(new Vector3(0, 0, 1.5f), 0.3f) }, 1f);
+        transition.SpherePath.InitPath(null, null, new Position(CellId, origin));
+        transition.SpherePath.SetCheckPos(new Position(CellId, origin), null);
+        return transition;
+    }
+
     /// <summary>A grounded mover on a flat floor (contact plane +Z).</summary>
     public static Transition OnFloor(Vector3 current, Vector3 check, float stepUpHeight = 0.1f)
     {

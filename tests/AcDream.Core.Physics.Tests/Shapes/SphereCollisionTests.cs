@@ -219,4 +219,29 @@ public class SphereCollisionTests
         Near(new Vector3(193, 3, 0), placed.Center);
         Assert.Equal(0.5f, placed.Radius);
     }
+
+    [Fact]
+    public void SecondSphere_IsTestedWithSphereZerosRadiusSum()
+    {
+        // Sphere 1 (r 0.3 at z 1.5) is 0.9 from a 0.5 target: apart by its own sum 0.8, but retail tests it
+        // with sphere 0's radsum 0.5 + 0.5 - EPSILON (CSphere::intersects_sphere). Sphere 0 is 1.35 away.
+        var t = TwoSpherePlacement(Vector3.Zero);
+        Assert.Equal(InsertType.Placement, t.SpherePath.InsertType);
+        Assert.Equal(TransitionState.Collided, SphereCollision.IntersectsSphere(new Sphere(new Vector3(0.9f, 0, 1.5f), 0.5f), t, false));
+        Assert.Equal(TransitionState.OK, SphereCollision.IntersectsSphere(new Sphere(new Vector3(1.01f, 0, 1.5f), 0.5f), t, false));
+    }
+
+    [Fact]
+    public void CheckWalkableAndEtherealObstruction_OnlyTestOverlap()
+    {
+        var probe = OnFloor(new Vector3(-0.2f, 0, 0.5f), new Vector3(0.1f, 0.3f, 0.5f));
+        probe.SpherePath.CheckWalkable = true;
+        Assert.Equal(TransitionState.Collided, SphereCollision.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), probe, false));
+        Near(new Vector3(0.1f, 0.3f, 0.5f), CheckOrigin(probe));
+
+        var ethereal = OnFloor(new Vector3(-0.2f, 0, 0.5f), new Vector3(0.1f, 0.3f, 0.5f));
+        ethereal.SpherePath.ObstructionEthereal = true;
+        Assert.Equal(TransitionState.Collided, SphereCollision.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), ethereal, false));
+        Assert.Equal(TransitionState.OK, SphereCollision.IntersectsSphere(new Sphere(new Vector3(2, 0, 0.5f), 0.5f), ethereal, false));
+    }
 }
