@@ -379,6 +379,8 @@ public static class SphereCollision
         if (!path.IsWalkableAllowable(restNormal.Z))
             return TransitionState.OK;
 
+        // Retail quirk: the plane passes through the bottom of the check sphere before it is lifted, not
+        // the rest point (CSphere.c intersects_sphere, acclient.c:359156: the offset is added afterwards).
         Vector3 restPoint = first.Center - restNormal * first.Radius;
         SetRetailContactPlane(transition, restNormal, restPoint);
         path.WalkInterp = walkInterp;
@@ -391,7 +393,7 @@ public static class SphereCollision
         => checkCenter - current + path.CurToCheckBlockOffset();
 
     /// <summary>The contact plane's normal, or the last known one when there is no contact plane.</summary>
-    internal static Vector3 ContactNormal(CollisionInfo collisions)
+    private static Vector3 ContactNormal(CollisionInfo collisions)
         => collisions.ContactPlaneValid ? collisions.ContactPlane.Normal : collisions.LastKnownContactPlane.Normal;
 
     /// <summary>
