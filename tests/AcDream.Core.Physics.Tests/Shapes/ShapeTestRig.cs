@@ -10,7 +10,7 @@ internal static class ShapeTestRig
 
     public static Transition Mover(Vector3 current, Vector3 check, float radius = 0.5f, ObjectInfoState state = ObjectInfoState.None)
     {
-        var transition = new Transition();
+        var transition = new Transition(new PhysicsWorld());
         transition.SpherePath.InitSphere(new[] { new Sphere(Vector3.Zero, radius) }, 1f);
         transition.SpherePath.InitPath(null, new Position(CellId, current), new Position(CellId, check));
         transition.SpherePath.SetCheckPos(new Position(CellId, check), null);
@@ -23,7 +23,7 @@ internal static class ShapeTestRig
     /// <summary>A placement of a two-sphere mover: sphere 0 radius 0.5 at z 0.5, sphere 1 radius 0.3 at z 1.5.</summary>
     public static Transition TwoSpherePlacement(Vector3 origin)
     {
-        var transition = new Transition();
+        var transition = new Transition(new PhysicsWorld());
         transition.SpherePath.InitSphere(new[] { new Sphere(new Vector3(0, 0, 0.5f), 0.5f), new Sphere(new Vector3(0, 0, 1.5f), 0.3f) }, 1f);
         transition.SpherePath.InitPath(null, null, new Position(CellId, origin));
         transition.SpherePath.SetCheckPos(new Position(CellId, origin), null);

@@ -1,0 +1,66 @@
+using AcDream.Core.Physics;
+using AcDream.Core.Physics.Tests.Support;
+
+namespace AcDream.Core.Physics.Tests.Apparatus;
+
+/// <summary>Step up onto ledges, stop at tall ones, and the edge behaviour of a grounded mover.</summary>
+public class StepAndEdgeTests
+{
+    private const uint PlatformId = 0x7000_0020;
+
+    /// <summary>A static 4 m × 4 m platform of the given height, its near edge at y = 102, centred on x = 100.</summary>
+    private static PhysicsWorld Platform(float height)
+    {
+        var world = TestGeometry.FlatWorld();
+        var box = new PhysicsModel(TestGeometry.BoxTree(new Vector3(-2, 0, 0), new Vector3(2, 4, height)), name: "platform");
+        var setup = new PhysicsSetup { Parts = [new SetupPart(box, Frame.Identity)] };
+        world.Objects.Register(PlatformId, setup, TestGeometry.At(100, 102, 0), 1f, PhysicsState.Static);
+        return world;
+    }
+
+    [Fact]
+    public void Ledge_0_3m_IsSteppedUp()
+    {
+        var player = Scenes.Player(Platform(0.3f), 100, 100);
+        player.Walk(new Vector3(0, 0.1f, 0), 40);
+        Assert.True(player.Origin.Y > 103f, $"the player should walk onto the platform, y = {player.Origin.Y}");
+        Assert.InRange(player.Origin.Z, 0.3f, 0.3f + 0.01f);
+        Assert.True(player.State.OnWalkable);
+    }
+
+    [Fact]
+    public void Ledge_0_7m_Blocks()
+    {
+        var player = Scenes.Player(Platform(0.7f), 100, 100);
+        player.Walk(new Vector3(0, 0.1f, 0), 40);
+        Assert.True(player.Origin.Y <= 102f - Scenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
+        Assert.InRange(player.Origin.Z, 0f, 0.01f);
+    }
+
+    private static Mover OnPlatform(MoverDescription? description = null)
+    {
+        var world = Platform(1f);
+        var start = TestGeometry.At(100, 104, 1f);
+        return new Mover(world, description ?? MoverDescription.Player(), MoverState.OnFloor(start, 1f));
+    }
+
+    [Fact]
+    public void WalkingOffALedge_WithEdgeSlide_StaysOnTheLedge()
+    {
+        var player = OnPlatform();
+        player.Walk(new Vector3(0, 0.1f, 0), 40); // the far edge is at y = 106
+        Assert.True(player.Origin.Y <= 106f + 0.05f, $"edge slide should keep the player on the platform, y = {player.Origin.Y}");
+        Assert.InRange(player.Origin.Z, 1f, 1.01f);
+        Assert.True(player.State.Contact);
+    }
+
+    [Fact]
+    public void WalkingOffALedge_WithoutEdgeSlide_LeavesTheGround()
+    {
+        var noEdgeSlide = new MoverDescription(0x50000003, MoverDescription.Player().Spheres, 0.6f, 0.04f, PhysicsState.Gravity, ObjectInfoState.IsPlayer);
+        var player = OnPlatform(noEdgeSlide);
+        player.Walk(new Vector3(0, 0.1f, 0), 40);
+        Assert.True(player.Origin.Y > 106.4f, $"y = {player.Origin.Y}");
+        Assert.False(player.State.Contact, "past the edge there is no ground within the step-down height");
+    }
+}
