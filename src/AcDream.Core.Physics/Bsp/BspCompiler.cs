@@ -32,11 +32,15 @@ namespace AcDream.Core.Physics;
 /// </para>
 /// <para>
 /// <b>Solid leaves.</b> Every internal node has both children (empty leaves where nothing lies), so no
-/// query meets a missing child. A leaf is <see cref="BspNodeData.Solid"/> when its region (the box around
-/// the input, grown by a margin, cut by the split planes on its path) is bounded and its whole surface is
-/// covered by the polygons it holds (area within 0.1 %): the region is closed in by geometry. Leaves of
-/// open geometry (a floor quad, a stair, a box missing a face) are not solid; empty leaves are never solid.
-/// The input solids must not interpenetrate (touching is fine).
+/// query meets a missing child. No polygon crosses the inside of a leaf's region (the split planes on
+/// its path cut the box around the input, grown by a margin), so the region is wholly in or out. A leaf
+/// is <see cref="BspNodeData.Solid"/> when it holds polygons and the winding number of all the input
+/// polygons around a point strictly inside its region is at least 0.99: the region is closed in by
+/// outward-facing geometry. (The classic "back of the last split is solid" rule would make the space
+/// under a lone floor quad solid.) Leaves of open geometry (a floor quad, a stair, a box missing a face)
+/// are therefore not solid, and empty leaves never are, matching retail's leaf tests, which ignore
+/// leaves without polygons. Interpenetrating solids are accepted, but a region inside one solid that
+/// holds no polygon is left non-solid; touching solids are fine.
 /// </para>
 /// <para>
 /// <b>Bounds.</b> Every node gets an explicit bounding sphere: the centre of the axis-aligned box of its
@@ -56,7 +60,7 @@ public static class BspCompiler
     public const float PlaneEpsilon = 1e-4f;
 
     private const float MinFragmentArea = 1e-7f;
-    private const float SolidCoverage = 0.999f;
+    private const double EnclosedWinding = 0.99;
 
     private sealed class Node
     {
@@ -99,7 +103,7 @@ public static class BspCompiler
 
         float margin = MathF.Max(1f, 0.1f * Vector3.Distance(min, max));
         var cell = BoxCell(min - new Vector3(margin), max + new Vector3(margin));
-        var root = Build(set, new List<Plane>(), cell, name);
+        var root = Build(set, new List<(Plane, bool)>(), cell, set, name);
         ComputeBounds(root, null);
 
         var nodes = new List<BspNodeData>();
@@ -109,7 +113,7 @@ public static class BspCompiler
         return BspTree.Create(outPolygons, nodes, name);
     }
 
-    private static Node Build(List<Polygon> set, List<Plane> path, List<Vector3[]> cell, string name)
+    private static Node Build(List<Polygon> set, List<(Plane Plane, bool Front)> path, List<Vector3[]> cell, IReadOnlyList<Polygon> all, string name)
     {
         int best = -1;
         int bestScore = int.MaxValue;
@@ -140,7 +144,7 @@ public static class BspCompiler
         }
 
         if (best < 0)
-            return MakeLeaf(set, cell);
+            return MakeLeaf(set, cell, path, all);
 
         var split = set[best].Plane;
         var frontSet = new List<Polygon>();
@@ -162,41 +166,84 @@ public static class BspCompiler
             }
         }
 
-        var childPath = new List<Plane>(path) { split };
         var flipped = new Plane(-split.Normal, -split.D);
         return new Node
         {
             Plane = split,
-            Front = Build(frontSet, childPath, ClipCell(cell, flipped), name),
-            Back = Build(backSet, childPath, ClipCell(cell, split), name),
+            Front = Build(frontSet, [.. path, (split, true)], ClipCell(cell, flipped), all, name),
+            Back = Build(backSet, [.. path, (split, false)], ClipCell(cell, split), all, name),
         };
     }
 
-    private static Node MakeLeaf(List<Polygon> set, List<Vector3[]> cell)
+    private static Node MakeLeaf(List<Polygon> set, List<Vector3[]> cell, List<(Plane Plane, bool Front)> path, IReadOnlyList<Polygon> all)
     {
         var leaf = new Node { IsLeaf = true, Polygons = set };
         if (set.Count == 0)
             return leaf;
-        float polygonArea = 0f;
         foreach (var p in set)
-        {
-            polygonArea += Area(p.Vertices);
             foreach (var v in p.Vertices)
                 leaf.Content.Add(v);
-        }
-        float cellArea = 0f;
-        foreach (var face in cell)
-            cellArea += Area(face);
-        leaf.Solid = cellArea > MinFragmentArea && polygonArea >= SolidCoverage * cellArea;
+        leaf.Solid = IsEnclosed(cell, path, all);
         if (leaf.Solid)
             foreach (var face in cell)
                 leaf.Content.AddRange(face);
         return leaf;
     }
 
-    private static bool OnAnyPlane(Polygon polygon, List<Plane> planes)
+    /// <summary>
+    /// True when a point strictly inside the region has a winding number of about one (or more) with
+    /// respect to all the input polygons, i.e. the region is closed in by outward-facing geometry.
+    /// </summary>
+    private static bool IsEnclosed(List<Vector3[]> cell, List<(Plane Plane, bool Front)> path, IReadOnlyList<Polygon> all)
     {
-        foreach (var plane in planes)
+        var centre = Vector3.Zero;
+        int count = 0;
+        foreach (var face in cell)
+            foreach (var v in face)
+            {
+                centre += v;
+                count++;
+            }
+        if (count == 0)
+            return false;
+        centre /= count;
+        foreach (var (plane, front) in path)
+        {
+            float d = Distance(plane, centre);
+            if (front ? d <= PlaneEpsilon : d >= -PlaneEpsilon)
+                return false; // the region has no volume
+        }
+        return WindingNumber(centre, all) >= EnclosedWinding;
+    }
+
+    /// <summary>The generalized winding number: the signed solid angle of the polygons seen from the point, over 4π.</summary>
+    private static double WindingNumber(Vector3 point, IReadOnlyList<Polygon> polygons)
+    {
+        double total = 0;
+        foreach (var polygon in polygons)
+        {
+            var v = polygon.Vertices;
+            for (int i = 1; i < v.Length - 1; i++)
+                total += SolidAngle(v[0] - point, v[i] - point, v[i + 1] - point);
+        }
+        return total / (4 * Math.PI);
+    }
+
+    /// <summary>Signed solid angle of a triangle (Van Oosterom and Strackee); positive when seen from behind its counter-clockwise front.</summary>
+    private static double SolidAngle(Vector3 a, Vector3 b, Vector3 c)
+    {
+        double ax = a.X, ay = a.Y, az = a.Z, bx = b.X, by = b.Y, bz = b.Z, cx = c.X, cy = c.Y, cz = c.Z;
+        double la = Math.Sqrt(ax * ax + ay * ay + az * az);
+        double lb = Math.Sqrt(bx * bx + by * by + bz * bz);
+        double lc = Math.Sqrt(cx * cx + cy * cy + cz * cz);
+        double triple = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+        double denominator = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
+        return 2 * Math.Atan2(triple, denominator);
+    }
+
+    private static bool OnAnyPlane(Polygon polygon, List<(Plane Plane, bool Front)> path)
+    {
+        foreach (var (plane, _) in path)
             if (Classify(polygon, plane) == Side.Coplanar)
                 return true;
         return false;
