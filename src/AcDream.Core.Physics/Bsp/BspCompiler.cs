@@ -115,6 +115,9 @@ public static class BspCompiler
 
     private static Node Build(List<Polygon> set, List<(Plane Plane, bool Front)> path, List<Vector3[]> cell, IReadOnlyList<Polygon> all, string name)
     {
+        // Each split uses up one plane of the input; deeper than that means float drift broke coplanarity.
+        if (path.Count > 2 * all.Count + 64)
+            throw new InvalidOperationException($"{name}: BSP compile did not converge (depth {path.Count}); the polygons may be too far from the origin for float precision.");
         int best = -1;
         int bestScore = int.MaxValue;
         for (int i = 0; i < set.Count; i++)

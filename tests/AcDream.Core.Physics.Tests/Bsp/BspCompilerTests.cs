@@ -128,6 +128,21 @@ public class BspCompilerTests
     }
 
     [Fact]
+    public void ManyRotatedSlabs_RandomPointsClassify()
+    {
+        var r = new Random(8);
+        var slabs = new List<(Vector3 Centre, Vector3 Size, Quaternion Rotation)>();
+        for (int k = 0; k < 9; k++)
+            slabs.Add((new Vector3(k % 3 * 5f, k / 3 * 5f, (float)r.NextDouble()),
+                new Vector3(1.5f + (float)r.NextDouble(), 1 + (float)r.NextDouble(), 0.8f + 0.8f * (float)r.NextDouble()),
+                Quaternion.CreateFromYawPitchRoll((float)r.NextDouble() * 3, (float)r.NextDouble(), (float)r.NextDouble())));
+        var tree = BspCompiler.Compile(slabs.SelectMany(s => BspShapes.SlabPolygons(s.Centre, s.Size, s.Rotation)).ToList());
+        Assert.Equal(9, Leaves(tree).Count(l => tree.Nodes[l].Solid));
+        AssertClassifies(tree, p => slabs.Any(s => Inside(Vector3.Transform(p - s.Centre, Quaternion.Inverse(s.Rotation)), -s.Size / 2, s.Size / 2)),
+            new Vector3(-2, -2, -1.5f), new Vector3(12, 12, 2.5f), seed: 9);
+    }
+
+    [Fact]
     public void BoxMissingAFace_HasNoSolidLeaf()
     {
         var faces = BoxFaces(BoxMin, BoxMax);
