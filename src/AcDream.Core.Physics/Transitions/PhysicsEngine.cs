@@ -20,6 +20,13 @@ public sealed class PhysicsEngine
     /// <summary>The world.</summary>
     public PhysicsWorld World => _transition.World;
 
+    /// <summary>Sub-step length in sphere radii: 1 (default) is retail; see <see cref="Transition.SubStepScale"/>.</summary>
+    public float SubStepScale
+    {
+        get => _transition.SubStepScale;
+        set => _transition.SubStepScale = value;
+    }
+
     /// <summary>Structured diagnostics; null (default) costs nothing.</summary>
     public ITransitionObserver? Observer
     {

@@ -30,6 +30,23 @@ public sealed partial class Transition
     /// <summary>Diagnostics sink; null (the default) costs nothing.</summary>
     public ITransitionObserver? Observer { get; set; }
 
+    /// <summary>
+    /// The sub-step length in units of sphere 0's radius. 1 (the default) is retail; other values are
+    /// offered for speed/accuracy studies and are not retail behaviour.
+    /// </summary>
+    public float SubStepScale
+    {
+        get => _subStepScale;
+        set
+        {
+            if (!(value > 0f) || !float.IsFinite(value))
+                throw new ArgumentException($"SubStepScale: must be a finite number greater than zero, got {value}.", nameof(value));
+            _subStepScale = value;
+        }
+    }
+
+    private float _subStepScale = 1f;
+
     /// <summary>Retail's step-count rule, exposed for tests and tools.</summary>
     /// <param name="offset">The whole motion.</param>
     /// <param name="radius">The radius of sphere 0.</param>
@@ -76,7 +93,7 @@ public sealed partial class Transition
         if (path.HasBeginPos)
         {
             offset = path.BeginPos.GetOffset(path.EndPos);
-            numSteps = CalcNumSteps(offset, path.LocalSphere[0].Radius, IsViewer, out perStep);
+            numSteps = CalcNumSteps(offset, path.LocalSphere[0].Radius * _subStepScale, IsViewer, out perStep);
         }
         if (numSteps > PhysicsConstants.MaxSubSteps)
             return false;
@@ -102,7 +119,7 @@ public sealed partial class Transition
                 // The camera's last step covers exactly what is left of the motion.
                 float length = offset.Length();
                 if (length > PhysicsConstants.Epsilon)
-                    perStep = offset * (length - path.LocalSphere[0].Radius * (numSteps - 1)) / length;
+                    perStep = offset * (length - path.LocalSphere[0].Radius * _subStepScale * (numSteps - 1)) / length;
             }
             path.GlobalOffset = AdjustOffset(perStep);
             if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
