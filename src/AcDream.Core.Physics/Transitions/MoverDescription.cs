@@ -41,11 +41,13 @@ public sealed class MoverDescription
 
     /// <summary>
     /// The retail player (Setup 0x02000001): spheres of radius 0.48 at heights 0.475 and 1.35, step-up 0.6,
-    /// step-down 0.04 (the seed's door tests), gravity, edge slide, a player.
+    /// gravity, edge slide, a player. The step-down defaults to the seed's 0.04 m; the setup's own value is
+    /// not known here (no DAT files), and a deeper probe is needed to follow slopes and stay on a ledge
+    /// just climbed, so tests of those pass a larger <paramref name="stepDownHeight"/>.
     /// </summary>
-    public static MoverDescription Player(uint objectId = 0x50000001) =>
+    public static MoverDescription Player(uint objectId = 0x50000001, float stepDownHeight = 0.04f, ObjectInfoState extraFlags = ObjectInfoState.None) =>
         new(objectId, [new Sphere(new Vector3(0, 0, 0.475f), 0.48f), new Sphere(new Vector3(0, 0, 1.35f), 0.48f)],
-            0.6f, 0.04f, PhysicsState.Gravity | PhysicsState.EdgeSlide, ObjectInfoState.IsPlayer);
+            0.6f, stepDownHeight, PhysicsState.Gravity | PhysicsState.EdgeSlide, ObjectInfoState.IsPlayer | extraFlags);
 
     /// <summary>The mover's id.</summary>
     public uint ObjectId { get; }

@@ -41,6 +41,24 @@ internal sealed class Mover
         return result;
     }
 
+    private float _verticalSpeed;
+
+    /// <summary>
+    /// One frame as a client drives it: the walk offset plus gravity's fall while the mover is not standing
+    /// on walkable ground (the transition itself knows no velocity).
+    /// </summary>
+    public MoveResult StepWithGravity(Vector3 walk, float dt)
+    {
+        if (State.Contact && State.OnWalkable)
+            _verticalSpeed = 0f;
+        else
+            _verticalSpeed += PhysicsConstants.Gravity * dt;
+        var result = Step(walk + new Vector3(0, 0, _verticalSpeed * dt));
+        if (result.Next.Contact && result.Next.OnWalkable)
+            _verticalSpeed = 0f;
+        return result;
+    }
+
     public void Walk(Vector3 offsetPerFrame, int frames)
     {
         for (int i = 0; i < frames; i++)
