@@ -1,0 +1,90 @@
+using AcDream.Core.Physics;
+using AcDream.Core.Physics.Tests.Support;
+
+namespace AcDream.Core.Physics.Tests.World;
+
+public class CellGraphTests
+{
+    private static uint Land(float x, float y) => LandDefs.LandCellAt(TestGeometry.Landblock, new Vector3(x, y, 0));
+
+    private static (HashSet<uint> Cells, Cell? Holder) Find(PhysicsWorld world, Position position, float radius, float z = 0.5f)
+    {
+        var cells = new CellArray();
+        ReadOnlySpan<Sphere> spheres = [new Sphere(position.Origin + new Vector3(0, 0, z), radius)];
+        var holder = world.Cells.FindCellList(position, spheres, cells, findContaining: true, path: null);
+        return (cells.Cells.Select(c => c.Id).ToHashSet(), holder);
+    }
+
+    [Fact]
+    public void SphereInsideACell_ListsOnlyThatCell()
+    {
+        var world = TestGeometry.FlatWorld();
+        var (cells, holder) = Find(world, TestGeometry.At(12, 12, 0), 0.48f);
+        Assert.Equal(new HashSet<uint> { Land(12, 12) }, cells);
+        Assert.Equal(Land(12, 12), holder!.Id);
+    }
+
+    [Fact]
+    public void SphereAcrossABorder_ListsBothCells_AndTheHolderIsWhereTheCentreIs()
+    {
+        var world = TestGeometry.FlatWorld();
+        var (cells, holder) = Find(world, TestGeometry.At(24.2f, 12, 0), 0.48f);
+        Assert.Equal(new HashSet<uint> { Land(12, 12), Land(30, 12) }, cells);
+        Assert.Equal(Land(30, 12), holder!.Id);
+        var (_, west) = Find(world, new Position(Land(23.8f, 12), new Vector3(23.8f, 12, 0)), 0.48f);
+        Assert.Equal(Land(12, 12), west!.Id);
+    }
+
+    [Fact]
+    public void SphereAtACorner_ListsFourCells()
+    {
+        var world = TestGeometry.FlatWorld();
+        var (cells, _) = Find(world, TestGeometry.At(47.9f, 47.9f, 0), 0.48f);
+        Assert.Equal(4, cells.Count);
+    }
+
+    [Fact]
+    public void SphereAtTheLandblockEdge_ListsOnlyKnownCells()
+    {
+        var world = TestGeometry.FlatWorld();
+        var (cells, holder) = Find(world, TestGeometry.At(0.2f, 100, 0), 0.48f);
+        Assert.Equal(new HashSet<uint> { Land(0.2f, 100) }, cells); // the western neighbour landblock is not loaded
+        Assert.NotNull(holder);
+    }
+
+    [Fact]
+    public void FromOutside_NearTheDoorway_TheRoomIsListed_ButTheHolderStaysOutdoors()
+    {
+        var world = Cottage.Build();
+        var (cells, holder) = Find(world, TestGeometry.At(100, 109.7f, 0), 0.48f);
+        Assert.Contains(Cottage.RoomId, cells);
+        Assert.True(LandDefs.IsLandCell(holder!.Id));
+    }
+
+    [Fact]
+    public void FromInside_NearTheDoorway_TheOutsideIsListedThroughThePortal_AndTheHolderIsTheRoom()
+    {
+        var world = Cottage.Build();
+        var (cells, holder) = Find(world, new Position(Cottage.RoomId, new Vector3(100, 110.3f, 0)), 0.48f);
+        Assert.Contains(Land(100, 110), cells);
+        Assert.Equal(Cottage.RoomId, holder!.Id);
+    }
+
+    [Fact]
+    public void FromInside_FarFromTheDoorway_OnlyTheRoomIsListed()
+    {
+        var world = Cottage.Build();
+        var (cells, holder) = Find(world, new Position(Cottage.RoomId, new Vector3(100, 113, 0)), 0.48f);
+        Assert.Equal(new HashSet<uint> { Cottage.RoomId }, cells);
+        Assert.Equal(Cottage.RoomId, holder!.Id);
+    }
+
+    [Fact]
+    public void UnknownCells_AreRefusedWithTheirId()
+    {
+        var world = Cottage.Build();
+        var ex = Assert.Throws<ArgumentException>(() => world.Cells.GetRequired(0xA9B40105, "cell"));
+        Assert.Contains("0xA9B40105", ex.Message);
+        Assert.Throws<ArgumentException>(() => world.Cells.AddLandblock(Terrain.Flat(TestGeometry.Landblock, 0)));
+    }
+}
