@@ -65,6 +65,26 @@ public sealed class PhysicsEngine
         return Collect(t, ok, state);
     }
 
+    /// <summary>
+    /// Places a mover into the world at <paramref name="position"/> the retail way (an initial placement):
+    /// pushed out of cell geometry, moved to the nearest free spot within 4 m when an object is in the way,
+    /// and settled onto the ground below when it is close. Not succeeded when no spot was found.
+    /// </summary>
+    public MoveResult Place(MoverDescription mover, Position position)
+    {
+        ArgumentNullException.ThrowIfNull(mover);
+        Guard.Frame(position.Frame, "position");
+        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
+        var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
+        var t = _transition;
+        var airborne = MoverState.Airborne(position);
+        Prepare(t, mover, airborne);
+        t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
+        t.SpherePath.InitPath(cell, null, position);
+        bool ok = t.FindPlacementPosition();
+        return Collect(t, ok, airborne);
+    }
+
     private static void Prepare(Transition t, MoverDescription mover, in MoverState state)
     {
         t.SpherePath.Reset();
