@@ -39,13 +39,15 @@ public sealed class MoverDescription
         TargetId = targetId;
     }
 
+    /// <summary>The retail player setup's step-down height (Setup 0x02000001: step-up 0.6, step-down 1.5; holtburger notes).</summary>
+    public const float PlayerStepDownHeight = 1.5f;
+
     /// <summary>
     /// The retail player (Setup 0x02000001): spheres of radius 0.48 at heights 0.475 and 1.35, step-up 0.6,
-    /// gravity, edge slide, a player. The step-down defaults to the seed's 0.04 m; the setup's own value is
-    /// not known here (no DAT files), and a deeper probe is needed to follow slopes and stay on a ledge
-    /// just climbed, so tests of those pass a larger <paramref name="stepDownHeight"/>.
+    /// step-down 1.5 (<see cref="PlayerStepDownHeight"/>), gravity, edge slide, a player. The seed's door
+    /// tests used a step-down of 0.04; pass it as <paramref name="stepDownHeight"/> to reproduce them.
     /// </summary>
-    public static MoverDescription Player(uint objectId = 0x50000001, float stepDownHeight = 0.04f, ObjectInfoState extraFlags = ObjectInfoState.None) =>
+    public static MoverDescription Player(uint objectId = 0x50000001, float stepDownHeight = PlayerStepDownHeight, ObjectInfoState extraFlags = ObjectInfoState.None) =>
         new(objectId, [new Sphere(new Vector3(0, 0, 0.475f), 0.48f), new Sphere(new Vector3(0, 0, 1.35f), 0.48f)],
             0.6f, stepDownHeight, PhysicsState.Gravity | PhysicsState.EdgeSlide, ObjectInfoState.IsPlayer | extraFlags);
 

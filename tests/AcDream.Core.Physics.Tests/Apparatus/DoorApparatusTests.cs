@@ -137,7 +137,7 @@ public class DoorApparatusTests
     {
         var world = Scenes.Door();
         var engine = new PhysicsEngine(world);
-        var mover = MoverDescription.Player();
+        var mover = Scenes.SeedPlayer();
         var state = MoverState.OnFloor(TestGeometry.At(100.3f, 99.3f, 0), 0f);
         var target = state.Position;
         target.Frame.Origin += new Vector3(0.07f, 0.07f, 0);

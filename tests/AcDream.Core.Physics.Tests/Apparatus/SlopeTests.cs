@@ -18,7 +18,7 @@ public class SlopeTests
         return world;
     }
 
-    private static Mover OnSlope(float rise, float x, float stepDownHeight = 0.04f)
+    private static Mover OnSlope(float rise, float x, float stepDownHeight = MoverDescription.PlayerStepDownHeight)
     {
         var normal = Vector3.Normalize(new Vector3(-rise, 0, 1));
         // Retail quirk (OBJECTINFO::validate_walkable, ACE ObjectInfo.ValidateWalkable): terrain contact is
@@ -42,7 +42,7 @@ public class SlopeTests
     [InlineData(1.25f, false)]  // 51°: normal z 0.625 < floor_z
     public void Standing_IsOnWalkableOnlyAboveFloorZ(float rise, bool walkable)
     {
-        var mover = OnSlope(rise, 100, stepDownHeight: 0.6f);
+        var mover = OnSlope(rise, 100);
         mover.Step(new Vector3(0, 0.05f, 0));
         Assert.Equal(walkable, mover.State.OnWalkable);
         // Retail (CTransition::adjust_offset) lifts a sphere that sinks into its contact plane until its surface
@@ -61,7 +61,7 @@ public class SlopeTests
     [InlineData(0.5f, false)]
     public void OnlyASlopeSteeperThanFloorZ_SlidesTheMoverDown(float rise, bool slides)
     {
-        var mover = OnSlope(rise, 100, stepDownHeight: 0.6f);
+        var mover = OnSlope(rise, 100);
         var start = mover.Origin;
         for (int i = 0; i < 60; i++)
             mover.StepWithGravity(Vector3.Zero, 1f / 30f);
@@ -85,7 +85,7 @@ public class SlopeTests
     public void WalkingDownAWalkableSlope_FollowsTheSurface()
     {
         const float rise = 0.5f;
-        var mover = OnSlope(rise, 100, stepDownHeight: 0.6f);
+        var mover = OnSlope(rise, 100);
         float z0 = mover.Origin.Z;
         mover.Walk(new Vector3(-0.1f, 0, 0), 10);
         float dx = mover.Origin.X - 100f;

@@ -19,13 +19,11 @@ public class StepAndEdgeTests
     }
 
     /// <summary>
-    /// A player whose step-down equals its step-up (0.6 m). Retail's step-up leaves the mover resting on
-    /// the ledge's plane but short of its lip (the sphere pops up where it touched the riser), and the next
-    /// frame's step-down probe must reach the top face from there: the seed's 0.04 m probe cannot, a
-    /// setup-sized one can. See the notes: the player setup's real step-down height is to be confirmed.
+    /// The retail player with its setup's step-down (1.5 m). Retail's step-up leaves the mover resting on the
+    /// ledge's plane but short of its lip (the sphere pops up where it touched the riser), and the next
+    /// frame's step-down probe must reach the top face from there: the seed's 0.04 m probe cannot.
     /// </summary>
-    private static MoverDescription Climber() =>
-        new(0x50000004, MoverDescription.Player().Spheres, 0.6f, 0.6f, PhysicsState.Gravity | PhysicsState.EdgeSlide, ObjectInfoState.IsPlayer);
+    private static MoverDescription Climber() => MoverDescription.Player();
 
     [Fact]
     public void Ledge_0_3m_IsSteppedUp()
@@ -64,7 +62,7 @@ public class StepAndEdgeTests
     {
         var world = Platform(1f);
         var start = TestGeometry.At(100, 104, 1f);
-        return new Mover(world, description ?? MoverDescription.Player(), MoverState.OnFloor(start, 1f));
+        return new Mover(world, description ?? Scenes.SeedPlayer(), MoverState.OnFloor(start, 1f));
     }
 
     [Fact]

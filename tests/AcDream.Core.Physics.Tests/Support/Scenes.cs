@@ -40,9 +40,12 @@ internal static class Scenes
         return worst;
     }
 
+    /// <summary>The seed's apparatus player: the retail player's spheres and step-up, with step-down 0.04.</summary>
+    public static MoverDescription SeedPlayer() => MoverDescription.Player(stepDownHeight: 0.04f);
+
     public static Mover Player(PhysicsWorld world, float x, float y, MoverDescription? description = null)
     {
         var position = TestGeometry.At(x, y, 0);
-        return new Mover(world, description ?? MoverDescription.Player(), MoverState.OnFloor(position, 0f));
+        return new Mover(world, description ?? SeedPlayer(), MoverState.OnFloor(position, 0f));
     }
 }
