@@ -52,6 +52,12 @@ public class FuzzTests(ITestOutputHelper output)
     private static bool Finite(Vector3 v) => float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
     private static bool Finite(Quaternion q) => float.IsFinite(q.X) && float.IsFinite(q.Y) && float.IsFinite(q.Z) && float.IsFinite(q.W);
 
+    /// <summary>
+    /// Case seeds of open findings, each reduced to a test in <see cref="FuzzRegressionTests"/>; they are
+    /// still run, and reported separately instead of failing the run.
+    /// </summary>
+    internal static readonly HashSet<int> KnownFailures = [FuzzRegressionTests.CaseSeed];
+
     internal static int CaseSeed(int seed, int index) => unchecked(seed * 1_000_003 + index);
 
     [Fact]
@@ -69,6 +75,11 @@ public class FuzzTests(ITestOutputHelper output)
             solids += c.Solids.Count;
             var failure = Check(c, out int caseHits);
             hits += caseHits;
+            if (failure is not null && KnownFailures.Contains(c.Seed))
+            {
+                output.WriteLine($"known finding, case seed {c.Seed}: {failure}");
+                continue;
+            }
             if (failure is not null)
             {
                 failures.Add($"{failure}\n    {c}");
