@@ -14,7 +14,7 @@ public sealed class PhysicsModel
         Bsp = bsp ?? throw new ArgumentNullException(nameof(bsp), $"{name}.bsp: is required.");
         var bounds = boundingSphere ?? bsp.Bounds;
         Guard.Finite(bounds.Center, $"{name}.boundingSphere.center");
-        Guard.NonNegative(bounds.Radius, $"{name}.boundingSphere.radius");
+        Guard.Extent(bounds.Radius, true, $"{name}.boundingSphere.radius");
         BoundingSphere = bounds;
         Name = name;
     }

@@ -52,24 +52,29 @@ public sealed class PhysicsSetup
         }
     }
 
-    /// <summary>Checks every field; throws an <see cref="ArgumentException"/> naming the first bad one.</summary>
+    /// <summary>
+    /// Checks every field; throws an <see cref="ArgumentException"/> naming the first bad one: null lists or
+    /// parts, non-finite or out-of-range frames, centres and low points (±<see cref="InputLimits.MaxCoordinate"/>),
+    /// zero-length part rotations, radii not in (0, <see cref="InputLimits.MaxExtent"/>], heights and step
+    /// heights not in [0, <see cref="InputLimits.MaxExtent"/>].
+    /// </summary>
     public void Validate(string name = "setup")
     {
-        if (Parts is null) throw new ArgumentException($"{name}.parts: is null.");
-        if (CylSpheres is null) throw new ArgumentException($"{name}.cylSpheres: is null.");
-        if (Spheres is null) throw new ArgumentException($"{name}.spheres: is null.");
+        if (Parts is null) throw new ArgumentException($"{name}.parts: is null.", $"{name}.parts");
+        if (CylSpheres is null) throw new ArgumentException($"{name}.cylSpheres: is null.", $"{name}.cylSpheres");
+        if (Spheres is null) throw new ArgumentException($"{name}.spheres: is null.", $"{name}.spheres");
         for (int i = 0; i < Parts.Count; i++)
         {
-            if (Parts[i] is null) throw new ArgumentException($"{name}.parts[{i}]: is null.");
+            if (Parts[i] is null) throw new ArgumentException($"{name}.parts[{i}]: is null.", $"{name}.parts[{i}]");
             Guard.Frame(Parts[i].Frame, $"{name}.parts[{i}].frame");
         }
         for (int i = 0; i < CylSpheres.Count; i++)
             Guard.CylSphere(CylSpheres[i], $"{name}.cylSpheres[{i}]");
         for (int i = 0; i < Spheres.Count; i++)
             Guard.Sphere(Spheres[i], $"{name}.spheres[{i}]");
-        Guard.NonNegative(Height, $"{name}.height");
-        Guard.NonNegative(Radius, $"{name}.radius");
-        Guard.NonNegative(StepUpHeight, $"{name}.stepUpHeight");
-        Guard.NonNegative(StepDownHeight, $"{name}.stepDownHeight");
+        Guard.Extent(Height, true, $"{name}.height");
+        Guard.Extent(Radius, true, $"{name}.radius");
+        Guard.Extent(StepUpHeight, true, $"{name}.stepUpHeight");
+        Guard.Extent(StepDownHeight, true, $"{name}.stepDownHeight");
     }
 }

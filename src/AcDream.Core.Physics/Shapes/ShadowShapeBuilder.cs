@@ -12,11 +12,14 @@ public static class ShadowShapeBuilder
     /// radius and height × scale), one sphere per sphere (centre and radius × scale). All are kept: retail
     /// stores both a door's BSP and its cylinder and chooses between them when colliding.
     /// Order: BSP parts, then cylinders, then spheres, each in setup order.
+    /// Throws <see cref="ArgumentException"/> naming the field for an invalid setup (see
+    /// <see cref="PhysicsSetup.Validate"/>), a scale that is not in (0, <see cref="InputLimits.MaxExtent"/>],
+    /// or a shape whose scaled bounds exceed <see cref="InputLimits.MaxExtent"/>.
     /// </summary>
     public static ShadowShape[] FromSetup(PhysicsSetup setup, float scale = 1f, string name = "setup")
     {
         ArgumentNullException.ThrowIfNull(setup);
-        Guard.Positive(scale, $"{name}.scale");
+        Guard.Extent(scale, false, $"{name}.scale");
         setup.Validate(name);
         var shapes = new List<ShadowShape>(setup.Parts.Count + setup.CylSpheres.Count + setup.Spheres.Count);
         for (int i = 0; i < setup.Parts.Count; i++)
@@ -36,6 +39,12 @@ public static class ShadowShapeBuilder
         {
             var s = setup.Spheres[i];
             shapes.Add(ShadowShape.ForSphere(i, new Sphere(s.Center * scale, s.Radius * scale)));
+        }
+        foreach (var shape in shapes)
+        {
+            string kind = shape.Kind == ShadowShapeKind.Bsp ? "parts" : shape.Kind == ShadowShapeKind.Cylinder ? "cylSpheres" : "spheres";
+            Guard.Extent(shape.Bounds.Radius, true, $"{name}.{kind}[{shape.Index}]", ".bounds.radius × scale");
+            Guard.Finite(shape.Bounds.Center, $"{name}.{kind}[{shape.Index}]", ".bounds.center × scale");
         }
         return shapes.ToArray();
     }

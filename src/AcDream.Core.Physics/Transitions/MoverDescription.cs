@@ -3,7 +3,11 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics;
 
-/// <summary>What a mover is: its spheres, step heights and flags. Validated on construction; immutable.</summary>
+/// <summary>
+/// What a mover is: its spheres, step heights and flags. Validated on construction (radii, heights and
+/// scale finite, radii and scale positive, all at most <see cref="InputLimits.MaxExtent"/> also after
+/// scaling); immutable, so one description may be shared by engines on several threads.
+/// </summary>
 public sealed class MoverDescription
 {
     private readonly Sphere[] _spheres;
@@ -24,9 +28,14 @@ public sealed class MoverDescription
             throw new ArgumentException($"mover.spheres: a mover has one or two spheres, got {spheres.Length}.", nameof(spheres));
         for (int i = 0; i < spheres.Length; i++)
             Guard.Sphere(spheres[i], $"mover.spheres[{i}]");
-        Guard.NonNegative(stepUpHeight, "mover.stepUpHeight");
-        Guard.NonNegative(stepDownHeight, "mover.stepDownHeight");
-        Guard.Positive(scale, "mover.scale");
+        Guard.Extent(stepUpHeight, true, "mover.stepUpHeight");
+        Guard.Extent(stepDownHeight, true, "mover.stepDownHeight");
+        Guard.Extent(scale, false, "mover.scale");
+        for (int i = 0; i < spheres.Length; i++)
+        {
+            Guard.Extent(spheres[i].Radius * scale, false, $"mover.spheres[{i}].radius × scale");
+            Guard.Finite(spheres[i].Center * scale, $"mover.spheres[{i}].center × scale");
+        }
         if ((flags & (ObjectInfoState.Contact | ObjectInfoState.OnWalkable)) != 0)
             throw new ArgumentException("mover.flags: Contact and OnWalkable are per-frame state; pass them in MoverState.", nameof(flags));
         ObjectId = objectId;
@@ -99,7 +108,8 @@ public struct MoverState
     public static MoverState OnFloor(Position position, float floorZ) => new()
     {
         Position = position,
-        Contact = true,
+        // Checked here too, so the mistake is reported where it was made.
+        Contact = Guard.CoordinateOk(floorZ, "floorZ"),
         OnWalkable = true,
         ContactPlane = new Plane(Vector3.UnitZ, -floorZ),
         ContactPlaneCellId = position.CellId,

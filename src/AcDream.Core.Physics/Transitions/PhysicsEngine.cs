@@ -37,8 +37,15 @@ public sealed class PhysicsEngine
     /// <summary>
     /// Moves a mover from <paramref name="state"/>'s position towards <paramref name="target"/> (a position
     /// in the same or a neighbouring landblock's frame, labelled with the start cell or any cell of the
-    /// target's landblock). Throws <see cref="ArgumentException"/> for non-finite input or unknown cells,
-    /// before anything is changed.
+    /// target's landblock). Throws <see cref="ArgumentException"/> naming the field, before anything is
+    /// changed, for non-finite or out-of-range input (coordinates beyond ±<see cref="InputLimits.MaxCoordinate"/>),
+    /// zero-length rotations, a contact plane whose normal is not a unit vector, and unknown cells (the
+    /// state's cell, the target's cell label and a non-zero contact-plane cell must all be in the world).
+    /// A motion cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps (kilometres in one
+    /// frame) is not an error: as in retail it is refused at once, with <see cref="MoveResult.Succeeded"/>
+    /// false and <see cref="MoveResult.Next"/> equal to <paramref name="state"/>.
+    /// Thread safety: one engine per thread; engines on several threads may share a world as long as
+    /// nothing registers, moves or unregisters objects or adds cells meanwhile.
     /// </summary>
     public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
     {
@@ -48,11 +55,15 @@ public sealed class PhysicsEngine
         var begin = state.Position;
         begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
         target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
-        var cell = _transition.World.Cells.GetRequired(begin.CellId, "state.position.cell");
+        var cells = _transition.World.Cells;
+        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        cells.GetRequired(target.CellId, "target.cell");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
-            Guard.Finite(state.ContactPlane.Normal, "state.contactPlane.normal");
-            Guard.Finite(state.ContactPlane.D, "state.contactPlane.d");
+            Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
+            Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
+            if (state.ContactPlaneCellId != 0)
+                cells.GetRequired(state.ContactPlaneCellId, "state.contactPlaneCellId");
         }
         if (state.SlidingNormalValid)
             Guard.Finite(state.SlidingNormal, "state.slidingNormal");

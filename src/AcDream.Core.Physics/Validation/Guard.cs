@@ -18,10 +18,41 @@ internal static class Guard
             throw new ArgumentException($"{Name(field, suffix)}: must be a finite number, got {value}.", Name(field, suffix));
     }
 
+    /// <summary>A point or vector: every component finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
     public static void Finite(Vector3 value, string field, string? suffix = null)
     {
-        if (!float.IsFinite(value.X) || !float.IsFinite(value.Y) || !float.IsFinite(value.Z))
-            throw new ArgumentException($"{Name(field, suffix)}: must be finite, got {value}.", Name(field, suffix));
+        if (!(MathF.Abs(value.X) <= InputLimits.MaxCoordinate) || !(MathF.Abs(value.Y) <= InputLimits.MaxCoordinate)
+            || !(MathF.Abs(value.Z) <= InputLimits.MaxCoordinate))
+            throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
+    }
+
+    /// <summary>A coordinate: finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
+    public static void Coordinate(float value, string field, string? suffix = null)
+    {
+        if (!(MathF.Abs(value) <= InputLimits.MaxCoordinate))
+            throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
+    }
+
+    /// <summary>As <see cref="Coordinate"/>, returning true, for use in initializers.</summary>
+    public static bool CoordinateOk(float value, string field)
+    {
+        Coordinate(value, field);
+        return true;
+    }
+
+    /// <summary>A size: finite, greater than zero (or zero when <paramref name="allowZero"/>), at most <see cref="InputLimits.MaxExtent"/>.</summary>
+    public static void Extent(float value, bool allowZero, string field, string? suffix = null)
+    {
+        if (!(allowZero ? value >= 0f : value > 0f) || !(value <= InputLimits.MaxExtent))
+            throw new ArgumentException($"{Name(field, suffix)}: must be a finite number {(allowZero ? "of zero or more" : "greater than zero")} and at most {InputLimits.MaxExtent} m, got {value}.", Name(field, suffix));
+    }
+
+    /// <summary>A plane normal: finite and of unit length (within 1e-3).</summary>
+    public static void UnitNormal(Vector3 value, string field, string? suffix = null)
+    {
+        Finite(value, field, suffix);
+        if (!(MathF.Abs(value.LengthSquared() - 1f) <= 2e-3f))
+            throw new ArgumentException($"{Name(field, suffix)}: must be a unit vector, got {value} (length {value.Length()}).", Name(field, suffix));
     }
 
     public static void Positive(float value, string field, string? suffix = null)
@@ -56,13 +87,13 @@ internal static class Guard
     public static void Sphere(in Sphere sphere, string field)
     {
         Finite(sphere.Center, field, ".center");
-        Positive(sphere.Radius, field, ".radius");
+        Extent(sphere.Radius, false, field, ".radius");
     }
 
     public static void CylSphere(in CylSphere cyl, string field)
     {
         Finite(cyl.LowPoint, field, ".lowPoint");
-        Positive(cyl.Radius, field, ".radius");
-        NonNegative(cyl.Height, field, ".height");
+        Extent(cyl.Radius, false, field, ".radius");
+        Extent(cyl.Height, true, field, ".height");
     }
 }

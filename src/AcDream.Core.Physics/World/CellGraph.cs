@@ -14,7 +14,11 @@ public sealed class CellGraph
 {
     private readonly Dictionary<uint, Cell> _cells = new();
 
-    /// <summary>Adds a land block's 64 outdoor cells built from its terrain.</summary>
+    /// <summary>
+    /// Adds a land block's 64 outdoor cells built from its terrain. All or nothing: a landblock already in
+    /// the world or a cell that cannot be built throws before any cell is added.
+    /// Single writer: add cells from one thread while no query runs.
+    /// </summary>
     public void AddLandblock(Terrain terrain)
     {
         ArgumentNullException.ThrowIfNull(terrain);
@@ -24,11 +28,11 @@ public sealed class CellGraph
             if (_cells.ContainsKey(id))
                 throw new ArgumentException($"landblock 0x{terrain.Landblock:X4}: cell 0x{id:X8} is already in the world.", nameof(terrain));
         }
+        var built = new LandCell[64];
         for (uint i = 1; i <= 64; i++)
-        {
-            uint id = (terrain.Landblock << 16) | i;
-            _cells.Add(id, new LandCell(id, terrain));
-        }
+            built[i - 1] = new LandCell((terrain.Landblock << 16) | i, terrain);
+        foreach (var land in built)
+            _cells.Add(land.Id, land);
     }
 
     /// <summary>Adds an env cell. Its portals may name cells added later.</summary>

@@ -63,7 +63,7 @@ public sealed class ShadowObjectRegistry
         for (int i = 0; i < shapes.Length; i++)
             if (shapes[i] is null)
                 throw new ArgumentException($"{name}.shapes[{i}]: is null.", nameof(shapes));
-        Guard.Positive(scale, $"{name}.scale");
+        Guard.Extent(scale, false, $"{name}.scale");
         position = CheckPosition(position, name);
 
         var record = new Record { Shapes = (ShadowShape[])shapes.Clone(), Position = position, Scale = scale, State = state, Flags = flags };

@@ -14,13 +14,13 @@ public sealed class Terrain
 
     private readonly float[] _heights;
 
-    /// <summary>Creates terrain from 81 heights, indexed [x * 9 + y] (x east, y north), in metres.</summary>
+    /// <summary>Creates terrain from 81 heights, indexed [x * 9 + y] (x east, y north), in metres (finite, within ±<see cref="InputLimits.MaxCoordinate"/>).</summary>
     public Terrain(uint landblock, ReadOnlySpan<float> heights, string name = "terrain")
     {
         if (heights.Length != VerticesPerSide * VerticesPerSide)
             throw new ArgumentException($"{name}.heights: expected {VerticesPerSide * VerticesPerSide} values (9×9), got {heights.Length}.", nameof(heights));
         for (int i = 0; i < heights.Length; i++)
-            Guard.Finite(heights[i], $"{name}.heights[{i}]");
+            Guard.Coordinate(heights[i], $"{name}.heights[{i}]");
         if (landblock > 0xFFFF)
             throw new ArgumentException($"{name}.landblock: 0x{landblock:X} is not a 16-bit landblock id.", nameof(landblock));
         Landblock = landblock;

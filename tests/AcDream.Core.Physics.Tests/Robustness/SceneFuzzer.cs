@@ -1,0 +1,216 @@
+using AcDream.Core.Physics;
+using AcDream.Core.Physics.Tests.Support;
+
+namespace AcDream.Core.Physics.Tests.Robustness;
+
+/// <summary>
+/// Random small scenes and motions from one integer seed (System.Random with a seed is a fixed
+/// algorithm, so a case seed reproduces its case on any machine). A scene is flat or random 9×9 terrain
+/// in one landblock, with up to six objects (boxes and rotated slabs as BSP parts, cylinders, spheres)
+/// around the landblock's centre; a motion is one mover (one or two spheres) started grounded or in the
+/// air, then a few frames of random offsets and headings.
+/// </summary>
+internal sealed class SceneFuzzer
+{
+    public const uint MoverId = 0x5000_0001;
+    public static readonly Vector3 Centre = new(96, 96, 0);
+
+    /// <summary>A closed solid placed in the world: its box in its own space, and where that space is.</summary>
+    public readonly record struct Solid(uint Id, Vector3 HalfSize, Vector3 Origin, Quaternion Rotation);
+
+    public sealed class Case
+    {
+        public required int Seed;
+        public required PhysicsWorld World;
+        public required MoverDescription Mover;
+        public required MoverState Start;
+        public required List<Position> Targets;
+        public readonly List<Solid> Solids = new();
+        public readonly List<string> Description = new();
+        public override string ToString() => $"case seed {Seed}: " + string.Join("; ", Description);
+    }
+
+    public static Case Make(int seed)
+    {
+        var rng = new Random(seed);
+        float R(float lo, float hi) => lo + (float)rng.NextDouble() * (hi - lo);
+        Quaternion AnyRotation()
+        {
+            var q = new Quaternion(R(-1, 1), R(-1, 1), R(-1, 1), R(-1, 1));
+            return q.LengthSquared() < 1e-3f ? Quaternion.Identity : Quaternion.Normalize(q);
+        }
+        Quaternion Heading(float yaw) => Quaternion.CreateFromAxisAngle(Vector3.UnitZ, yaw);
+
+        var world = new PhysicsWorld();
+        var desc = new List<string>();
+        bool flat = rng.Next(2) == 0;
+        if (flat)
+        {
+            float h = R(-5, 5);
+            world.Cells.AddLandblock(Terrain.Flat(TestGeometry.Landblock, h));
+            desc.Add($"flat terrain {h}");
+        }
+        else
+        {
+            var heights = new float[81];
+            for (int i = 0; i < heights.Length; i++)
+                heights[i] = R(0, 6);
+            world.Cells.AddLandblock(new Terrain(TestGeometry.Landblock, heights));
+            desc.Add("random terrain");
+        }
+
+        var c = new Case
+        {
+            Seed = seed, World = world, Mover = null!, Start = default, Targets = new(),
+        };
+        c.Description.AddRange(desc);
+
+        int objects = rng.Next(0, 7);
+        for (int i = 0; i < objects; i++)
+        {
+            uint id = 0x7000_0000u + (uint)i;
+            var xy = Centre + new Vector3(R(-4, 4), R(-4, 4), 0);
+            var at = new Vector3(xy.X, xy.Y, Ground(world, xy) + R(-0.5f, 1.5f));
+            var pos = new Position(LandDefs.LandCellAt(TestGeometry.Landblock, at), new Frame(at, AnyRotation()));
+            var state = rng.Next(6) switch
+            {
+                0 => PhysicsState.Ethereal,
+                1 => PhysicsState.Static,
+                2 => PhysicsState.ReportCollisions,
+                _ => PhysicsState.None,
+            };
+            int kind = rng.Next(4);
+            PhysicsSetup setup;
+            switch (kind)
+            {
+                case 0:
+                case 1:
+                {
+                    // A box (kind 0) or a thin slab (kind 1), as a BSP part with its own rotation inside the object.
+                    var half = kind == 0 ? new Vector3(R(0.2f, 2f), R(0.2f, 2f), R(0.2f, 2f)) : new Vector3(R(0.5f, 2f), R(0.02f, 0.2f), R(0.5f, 2f));
+                    var partRotation = rng.Next(2) == 0 ? Quaternion.Identity : AnyRotation();
+                    var partOrigin = new Vector3(R(-0.5f, 0.5f), R(-0.5f, 0.5f), R(-0.5f, 0.5f));
+                    var model = new PhysicsModel(BspShapes.Box(-half, half));
+                    setup = new PhysicsSetup { Parts = [new SetupPart(model, new Frame(partOrigin, partRotation))] };
+                    if ((state & PhysicsState.Ethereal) == 0)
+                    {
+                        var objFrame = pos.Frame;
+                        c.Solids.Add(new Solid(id, half, objFrame.LocalToGlobal(partOrigin), Quaternion.Normalize(objFrame.Orientation * partRotation)));
+                    }
+                    c.Description.Add($"{(kind == 0 ? "box" : "slab")} 0x{id:X8} half {half} at {at} rot {pos.Frame.Orientation} part {partOrigin} {partRotation} {state}");
+                    break;
+                }
+                case 2:
+                    setup = new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, R(0.1f, 1.5f), R(0.1f, 3f))] };
+                    c.Description.Add($"cylinder 0x{id:X8} {setup.CylSpheres[0]} at {at} {state}");
+                    break;
+                default:
+                    setup = new PhysicsSetup { Spheres = [new Sphere(new Vector3(0, 0, R(0, 1)), R(0.1f, 1.5f))] };
+                    c.Description.Add($"sphere 0x{id:X8} {setup.Spheres[0]} at {at} {state}");
+                    break;
+            }
+            world.Objects.Register(id, setup, pos, 1f, state);
+        }
+
+        // The mover: one or two spheres, started clear of every solid (a few tries, then no solids are checked).
+        float radius = R(0.2f, 0.6f);
+        var spheres = rng.Next(2) == 0
+            ? new[] { new Sphere(new Vector3(0, 0, radius), radius) }
+            : new[] { new Sphere(new Vector3(0, 0, radius), radius), new Sphere(new Vector3(0, 0, radius + R(0.3f, 1.2f)), radius) };
+        var flags = rng.Next(3) == 0 ? PhysicsState.Gravity : PhysicsState.Gravity | PhysicsState.EdgeSlide;
+        c.Mover = new MoverDescription(MoverId, spheres, R(0f, 1f), R(0f, 0.5f), flags, ObjectInfoState.IsPlayer);
+        bool grounded = rng.Next(3) != 0;
+        MoverState start = default;
+        for (int attempt = 0; attempt < 20; attempt++)
+        {
+            var xy = Centre + new Vector3(R(-6, 6), R(-6, 6), 0);
+            float ground = Ground(world, xy);
+            var at = new Vector3(xy.X, xy.Y, grounded ? ground : ground + R(0.05f, 3f));
+            var position = new Position(LandDefs.LandCellAt(TestGeometry.Landblock, at), new Frame(at, Heading(R(0, MathF.Tau))));
+            start = grounded ? OnGround(world, position) : MoverState.Airborne(position);
+            if (Penetration.Worst(c, start.Position) <= PhysicsConstants.Epsilon)
+                break;
+        }
+        c.Start = start;
+        c.Description.Add($"mover r={radius} spheres={spheres.Length} {flags} {(grounded ? "grounded" : "airborne")} at {start.Position.Origin}");
+
+        int frames = rng.Next(1, 6);
+        for (int i = 0; i < frames; i++)
+        {
+            float length = R(0, 3f);
+            float yaw = R(0, MathF.Tau);
+            float climb = grounded ? 0f : R(-1.5f, 0.5f);
+            var offset = new Vector3(MathF.Cos(yaw) * length, MathF.Sin(yaw) * length, climb);
+            if (rng.Next(10) == 0)
+                offset = Vector3.Zero;
+            c.Targets.Add(new Position(0, new Frame(offset, Heading(R(0, MathF.Tau))))); // an offset; made absolute per frame
+            c.Description.Add($"frame {i} offset {offset}");
+        }
+        return c;
+    }
+
+    /// <summary>Terrain height under a landblock-local point.</summary>
+    public static float Ground(PhysicsWorld world, Vector3 xy)
+    {
+        var cell = (LandCell)world.Cells.Get(LandDefs.LandCellAt(TestGeometry.Landblock, xy))!;
+        var plane = cell.FindTerrainPolygon(xy)!.Plane;
+        return -(plane.Normal.X * xy.X + plane.Normal.Y * xy.Y + plane.D) / plane.Normal.Z;
+    }
+
+    private static MoverState OnGround(PhysicsWorld world, Position position)
+    {
+        var cell = (LandCell)world.Cells.Get(position.CellId)!;
+        var plane = cell.FindTerrainPolygon(position.Origin)!.Plane;
+        return new MoverState
+        {
+            Position = position,
+            Contact = true,
+            OnWalkable = plane.Normal.Z >= PhysicsConstants.FloorZ,
+            ContactPlane = plane,
+            ContactPlaneCellId = position.CellId,
+        };
+    }
+
+    /// <summary>One frame's target: the current position moved by the case's offset, heading replaced, same cell label.</summary>
+    public static Position TargetFor(in MoverState state, Position offset)
+    {
+        var target = state.Position;
+        target.Frame.Origin += offset.Frame.Origin;
+        target.Frame.Orientation = offset.Frame.Orientation;
+        return target;
+    }
+}
+
+/// <summary>An independent sphere-versus-oriented-box distance check (no library geometry involved).</summary>
+internal static class Penetration
+{
+    /// <summary>How deep a sphere reaches into a box (positive: overlap; ≤ 0: clear by that much).</summary>
+    public static float SphereIntoBox(Vector3 centre, float radius, SceneFuzzer.Solid box)
+    {
+        var local = Vector3.Transform(centre - box.Origin, Quaternion.Conjugate(box.Rotation));
+        var h = box.HalfSize;
+        var q = Vector3.Abs(local) - h;
+        float outside = Vector3.Max(q, Vector3.Zero).Length();
+        float inside = MathF.Min(MathF.Max(q.X, MathF.Max(q.Y, q.Z)), 0f);
+        return radius - (outside + inside);
+    }
+
+    /// <summary>The deepest reach of the case's mover at a position into any of the case's solids (−∞ when none).</summary>
+    public static float Worst(SceneFuzzer.Case c, in Position position) => Worst(c, position, out _);
+
+    public static float Worst(SceneFuzzer.Case c, in Position position, out uint solidId)
+    {
+        float worst = float.NegativeInfinity;
+        solidId = 0;
+        foreach (var s in c.Mover.Spheres)
+        {
+            var centre = position.Frame.LocalToGlobal(s.Center * c.Mover.Scale);
+            foreach (var solid in c.Solids)
+            {
+                float d = SphereIntoBox(centre, s.Radius * c.Mover.Scale, solid);
+                if (d > worst) { worst = d; solidId = solid.Id; }
+            }
+        }
+        return worst;
+    }
+}
