@@ -127,9 +127,11 @@ internal static class JsonRead
     {
         if (e.ValueKind != JsonValueKind.Number)
             throw new SceneFormatException(path, $"expected a number, got {Kind(e)}.");
-        if (!e.TryGetDouble(out double d) || !double.IsFinite(d) || !float.IsFinite((float)d))
+        // Parsed straight to float (not through double) so that a float written in its shortest
+        // round-trippable form reads back to the same bits.
+        if (!e.TryGetSingle(out float f) || !float.IsFinite(f))
             throw new SceneFormatException(path, $"the number {e.GetRawText()} is out of range for a float.");
-        return (float)d;
+        return f;
     }
 
     public static int Int(JsonElement e, string path)
