@@ -211,7 +211,7 @@ public sealed class Trajectory
         var o = new JsonObj(doc.RootElement, string.Empty);
         if (o.String("format") != "acdream-trajectory")
             throw new SceneFormatException("format", "expected \"acdream-trajectory\".");
-        int version = o.Int("version", -1);
+        int version = JsonRead.Int(o.Req("version"), "version");
         if (version != FormatVersion)
             throw new SceneFormatException("version", $"unsupported trajectory format version {version} (this library reads version {FormatVersion}).");
         string scene = o.String("scene");

@@ -184,3 +184,34 @@ public class ReplayTests
         }
     }
 }
+
+/// <summary>Scene loading stays off the hot path: resolving the frames of a loaded scene allocates nothing once warm.</summary>
+public class SceneHotPathTests
+{
+    [Theory]
+    [MemberData(nameof(ReplayTests.BuiltInScenes), MemberType = typeof(ReplayTests))]
+    public void ResolvingALoadedScenesFrames_AllocatesNothing(string name)
+    {
+        var scene = SceneLibrary.Load(name);
+        var engine = new PhysicsEngine(scene.World);
+        var inputs = new List<(MoverDescription Mover, MoverState State, Position Target)>();
+        foreach (var mover in scene.Movers)
+        {
+            var state = mover.Start;
+            for (int f = 0; f < mover.FrameCount; f++)
+            {
+                var target = state.Position;
+                target.Frame.Origin += mover.Motion[f];
+                inputs.Add((mover.Description, state, target));
+                state = engine.Resolve(mover.Description, state, target).Next;
+            }
+        }
+        var array = inputs.ToArray();
+        for (int i = 0; i < array.Length; i++)
+            engine.Resolve(array[i].Mover, array[i].State, array[i].Target);
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        for (int i = 0; i < array.Length; i++)
+            engine.Resolve(array[i].Mover, array[i].State, array[i].Target);
+        Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+    }
+}
