@@ -33,19 +33,7 @@ public static class Program
         """;
 
     /// <summary>Runs the tool.</summary>
-    public static int Main(string[] args)
-    {
-        try
-        {
-            return Run(args, Console.Out, Console.Error);
-        }
-        catch (UsageException ex)
-        {
-            Console.Error.WriteLine($"acdream-physics: {ex.Message}");
-            Console.Error.WriteLine("run 'acdream-physics help' for usage.");
-            return 2;
-        }
-    }
+    public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
 
     private sealed class UsageException(string message) : Exception(message);
 
