@@ -1,0 +1,272 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Numerics;
+using System.Text;
+
+namespace AcDream.Core.Physics.Tool;
+
+/// <summary>The acdream-physics command-line tool: run, record and replay scenes.</summary>
+public static class Program
+{
+    /// <summary>The usage text.</summary>
+    public const string Usage =
+        """
+        usage: acdream-physics <command> [options]
+
+        commands:
+          list                          list the built-in scenes
+          run SCENE [--out TRAJ] [--diag]
+                                        run a scene: a per-frame table and a one-line summary;
+                                        --out also writes the trajectory
+          record SCENE --out TRAJ [--diag]
+                                        run a scene and write its trajectory (summary only)
+          replay SCENE TRAJ [--tolerance METRES] [--diag]
+                                        re-run a recorded trajectory; exit 0 when it matches,
+                                        1 with the first difference
+          help                          this text
+
+        SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
+        --diag prints each frame's structured diagnostics events.
+        Exit codes: 0 success, 1 replay mismatch, 2 usage error or bad file.
+        """;
+
+    /// <summary>Runs the tool.</summary>
+    public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
+
+    private sealed class UsageException(string message) : Exception(message);
+
+    private sealed class Options
+    {
+        public readonly List<string> Positional = new();
+        public string? Out;
+        public bool Diag;
+        public float Tolerance = TrajectoryReplay.DefaultTolerance;
+    }
+
+    /// <summary>Runs a command, writing to the given streams; returns the exit code.</summary>
+    public static int Run(string[] args, TextWriter stdout, TextWriter stderr)
+    {
+        if (args.Length == 0)
+        {
+            stderr.WriteLine(Usage);
+            return 2;
+        }
+        string command = args[0];
+        Options options;
+        try
+        {
+            options = Parse(args[1..]);
+        }
+        catch (UsageException ex)
+        {
+            return Fail(stderr, ex.Message, usage: true);
+        }
+        try
+        {
+            switch (command)
+            {
+                case "help" or "--help" or "-h":
+                    stdout.WriteLine(Usage);
+                    return 0;
+                case "list":
+                    Expect(options, 0, "list takes no arguments");
+                    foreach (string name in SceneLibrary.Names)
+                    {
+                        var scene = SceneLibrary.Load(name);
+                        stdout.WriteLine($"{name,-10} {scene.Description}");
+                    }
+                    return 0;
+                case "run":
+                    Expect(options, 1, "run needs SCENE");
+                    return RunScene(options, stdout, table: true);
+                case "record":
+                    Expect(options, 1, "record needs SCENE");
+                    if (options.Out is null)
+                        throw new UsageException("record needs --out TRAJ");
+                    return RunScene(options, stdout, table: false);
+                case "replay":
+                    Expect(options, 2, "replay needs SCENE and TRAJ");
+                    return Replay(options, stdout);
+                default:
+                    throw new UsageException($"unknown command '{command}'");
+            }
+        }
+        catch (UsageException ex)
+        {
+            return Fail(stderr, ex.Message, usage: true);
+        }
+        catch (SceneFormatException ex)
+        {
+            return Fail(stderr, ex.Message, usage: false);
+        }
+        catch (IOException ex)
+        {
+            return Fail(stderr, ex.Message, usage: false);
+        }
+        catch (UnauthorizedAccessException ex)
+        {
+            return Fail(stderr, ex.Message, usage: false);
+        }
+        catch (ArgumentException ex)
+        {
+            return Fail(stderr, ex.Message, usage: false);
+        }
+    }
+
+    private static int Fail(TextWriter stderr, string message, bool usage)
+    {
+        stderr.WriteLine($"acdream-physics: {message}" + (usage ? " (run 'acdream-physics help' for usage)" : string.Empty));
+        return 2;
+    }
+
+    private static Options Parse(string[] args)
+    {
+        var o = new Options();
+        for (int i = 0; i < args.Length; i++)
+        {
+            string a = args[i];
+            switch (a)
+            {
+                case "--out":
+                    if (i + 1 >= args.Length) throw new UsageException("--out needs a file name");
+                    o.Out = args[++i];
+                    break;
+                case "--diag":
+                    o.Diag = true;
+                    break;
+                case "--tolerance":
+                    if (i + 1 >= args.Length || !float.TryParse(args[++i], NumberStyles.Float, CultureInfo.InvariantCulture, out o.Tolerance)
+                        || !(o.Tolerance >= 0) || !float.IsFinite(o.Tolerance))
+                        throw new UsageException("--tolerance needs a number of metres, zero or more");
+                    break;
+                default:
+                    if (a.StartsWith("--", StringComparison.Ordinal))
+                        throw new UsageException($"unknown option '{a}'");
+                    o.Positional.Add(a);
+                    break;
+            }
+        }
+        return o;
+    }
+
+    private static void Expect(Options o, int count, string message)
+    {
+        if (o.Positional.Count != count)
+            throw new UsageException(o.Positional.Count < count ? message : $"unexpected argument '{o.Positional[count]}'");
+    }
+
+    /// <summary>Loads SCENE: an existing file, else a built-in name.</summary>
+    private static Scene LoadScene(string arg)
+    {
+        if (File.Exists(arg))
+        {
+            try
+            {
+                return SceneLoader.LoadFile(arg);
+            }
+            catch (SceneFormatException ex)
+            {
+                throw new SceneFormatException(string.Empty, $"{arg}: {ex.Message}", ex);
+            }
+        }
+        if (SceneLibrary.Contains(arg))
+            return SceneLibrary.Load(arg);
+        throw new UsageException($"scene '{arg}' is neither a file nor a built-in scene ({string.Join(", ", SceneLibrary.Names)})");
+    }
+
+    private static int RunScene(Options o, TextWriter stdout, bool table)
+    {
+        var scene = LoadScene(o.Positional[0]);
+        Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
+        var trajectory = SceneRunner.Run(scene, diag);
+        if (table)
+            PrintTable(stdout, trajectory);
+        if (o.Out is not null)
+            File.WriteAllText(o.Out, trajectory.ToJson(), new UTF8Encoding(false));
+        stdout.WriteLine(Summary(scene, trajectory) + (o.Out is null ? string.Empty : $"; trajectory written to {o.Out}"));
+        return 0;
+    }
+
+    private static int Replay(Options o, TextWriter stdout)
+    {
+        var scene = LoadScene(o.Positional[0]);
+        string path = o.Positional[1];
+        Trajectory trajectory;
+        try
+        {
+            trajectory = Trajectory.LoadFile(path);
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException(string.Empty, $"{path}: {ex.Message}", ex);
+        }
+        Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
+        var result = TrajectoryReplay.Replay(scene, trajectory, o.Tolerance, diag);
+        foreach (string note in result.Notes)
+            stdout.WriteLine($"note: {note}");
+        if (result.Matches)
+        {
+            stdout.WriteLine($"{scene.Name}: replay matches ({result.FramesCompared} frames, {trajectory.Movers.Count} movers, tolerance {F(result.Tolerance)} m)");
+            return 0;
+        }
+        stdout.WriteLine($"{scene.Name}: replay differs after {result.FramesCompared} matching frames");
+        stdout.WriteLine($"  {result.FirstDifference}");
+        return 1;
+    }
+
+    private static string F(float v) => v.ToString("0.#####", CultureInfo.InvariantCulture);
+    private static string V(Vector3 v) => $"{v.X,10:F4} {v.Y,10:F4} {v.Z,8:F4}";
+
+    private static void PrintTable(TextWriter w, Trajectory t)
+    {
+        w.WriteLine($"{"mover",-22} {"frame",5} {"x",10} {"y",10} {"z",8} {"cell",-10} {"C",1} {"W",1} {"slide",-6} {"hit",-12} ok");
+        foreach (var mover in t.Movers)
+            for (int f = 0; f < mover.Frames.Count; f++)
+            {
+                var fr = mover.Frames[f];
+                string hit = fr.CollidedObjects.Count == 0 ? "-" : string.Join(",", Hexes(fr.CollidedObjects));
+                string slide = fr.SlidingNormalValid ? $"{fr.SlidingNormal.X:F2},{fr.SlidingNormal.Y:F2}" : "-";
+                w.WriteLine($"{mover.Name,-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}");
+            }
+    }
+
+    private static IEnumerable<string> Hexes(IReadOnlyList<uint> ids)
+    {
+        foreach (uint id in ids) yield return $"0x{id:X8}";
+    }
+
+    private static string Summary(Scene scene, Trajectory t)
+    {
+        int frames = 0, blocked = 0, refused = 0, airborne = 0;
+        foreach (var mover in t.Movers)
+            foreach (var fr in mover.Frames)
+            {
+                frames++;
+                if (fr.CollisionNormalValid || fr.CollidedObjects.Count > 0) blocked++;
+                if (!fr.Succeeded) refused++;
+                if (!fr.Contact) airborne++;
+            }
+        return $"{scene.Name}: {t.Movers.Count} movers, {frames} frames, {blocked} with a collision, {airborne} airborne, {refused} refused";
+    }
+
+    private static void PrintDiagnostics(TextWriter w, FrameDiagnostics d)
+    {
+        w.WriteLine($"# {d.MoverName} frame {d.Frame}: {d.Events.Count} events");
+        foreach (var e in d.Events)
+        {
+            string text = e.Kind switch
+            {
+                TransitionEventKind.SubStep => $"sub-step {e.Index} at {e.Vector} offset {e.Vector2}",
+                TransitionEventKind.ShapeTested => $"tested 0x{e.EntityId:X8} {e.ShapeKind}[{e.Index}] -> {e.Result}",
+                TransitionEventKind.ShapeSkipped => $"skipped 0x{e.EntityId:X8} {e.ShapeKind}[{e.Index}]: {e.Reason}",
+                TransitionEventKind.ObjectNormal => $"normal from 0x{e.EntityId:X8} {e.ShapeKind}: {e.Vector}",
+                TransitionEventKind.CellChanged => $"cell 0x{e.FromCell:X8} -> 0x{e.ToCell:X8}",
+                TransitionEventKind.StepUp => $"step up against {e.Vector}: {(e.Succeeded ? "succeeded" : "failed")}",
+                _ => e.ToString(),
+            };
+            w.WriteLine($"#   {text}");
+        }
+    }
+}

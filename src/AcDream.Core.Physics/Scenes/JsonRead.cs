@@ -1,0 +1,255 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Numerics;
+using System.Text.Json;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A JSON object being read strictly: every field asked for is remembered, and <see cref="End"/> refuses
+/// any field that was never asked for (typos are errors). Duplicate fields are refused on creation.
+/// Load-time only; allocates freely.
+/// </summary>
+internal sealed class JsonObj
+{
+    private readonly JsonElement _element;
+    private readonly HashSet<string> _known = new(StringComparer.Ordinal);
+
+    public JsonObj(JsonElement element, string path)
+    {
+        Path = path;
+        if (element.ValueKind != JsonValueKind.Object)
+            throw new SceneFormatException(path, $"expected an object, got {JsonRead.Kind(element)}.");
+        _element = element;
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var p in element.EnumerateObject())
+            if (!seen.Add(p.Name))
+                throw new SceneFormatException(Child(p.Name), "field appears more than once.");
+    }
+
+    /// <summary>The object's JSON path.</summary>
+    public string Path { get; }
+
+    /// <summary>The path of a field of this object.</summary>
+    public string Child(string name) => Path.Length == 0 ? name : $"{Path}.{name}";
+
+    /// <summary>The field, or null when absent or JSON null.</summary>
+    public JsonElement? Opt(string name)
+    {
+        _known.Add(name);
+        return _element.TryGetProperty(name, out var v) && v.ValueKind != JsonValueKind.Null ? v : null;
+    }
+
+    /// <summary>True when the field is present and not null.</summary>
+    public bool Has(string name) => Opt(name).HasValue;
+
+    /// <summary>The field; throws naming it when absent.</summary>
+    public JsonElement Req(string name) => Opt(name) ?? throw new SceneFormatException(Child(name), "is required.");
+
+    /// <summary>The fields in file order (all count as known).</summary>
+    public IEnumerable<(string Name, JsonElement Value)> Fields()
+    {
+        foreach (var p in _element.EnumerateObject())
+        {
+            _known.Add(p.Name);
+            yield return (p.Name, p.Value);
+        }
+    }
+
+    /// <summary>Refuses fields that were never asked for.</summary>
+    public void End()
+    {
+        foreach (var p in _element.EnumerateObject())
+            if (!_known.Contains(p.Name))
+            {
+                var known = new List<string>(_known);
+                known.Sort(StringComparer.Ordinal);
+                throw new SceneFormatException(Child(p.Name), $"unknown field (expected one of: {string.Join(", ", known)}).");
+            }
+    }
+
+    public float Float(string name) => JsonRead.Float(Req(name), Child(name));
+    public float Float(string name, float fallback) => Opt(name) is { } v ? JsonRead.Float(v, Child(name)) : fallback;
+    public bool Bool(string name, bool fallback) => Opt(name) is { } v ? JsonRead.Bool(v, Child(name)) : fallback;
+    public string String(string name) => JsonRead.String(Req(name), Child(name));
+    public string? String(string name, string? fallback) => Opt(name) is { } v ? JsonRead.String(v, Child(name)) : fallback;
+    public Vector3 Vec3(string name) => JsonRead.Vec3(Req(name), Child(name));
+    public Quaternion Rotation(string name) => Opt(name) is { } v ? JsonRead.Rotation(v, Child(name)) : Quaternion.Identity;
+    public uint Id(string name) => JsonRead.Id(Req(name), Child(name));
+    public int Int(string name, int fallback) => Opt(name) is { } v ? JsonRead.Int(v, Child(name)) : fallback;
+    public JsonObj Obj(string name) => new(Req(name), Child(name));
+    public IReadOnlyList<(JsonElement Value, string Path)> Array(string name) => JsonRead.Array(Req(name), Child(name));
+    public IReadOnlyList<(JsonElement Value, string Path)> Array(string name, bool optional) =>
+        Opt(name) is { } v ? JsonRead.Array(v, Child(name)) : System.Array.Empty<(JsonElement, string)>();
+}
+
+/// <summary>Typed reads of JSON values; every error names the value's path.</summary>
+internal static class JsonRead
+{
+    public static readonly JsonDocumentOptions Options = new()
+    {
+        CommentHandling = JsonCommentHandling.Skip,
+        AllowTrailingCommas = false,
+        MaxDepth = 64,
+    };
+
+    /// <summary>Parses a document; a syntax error becomes a <see cref="SceneFormatException"/> with its line and position.</summary>
+    public static JsonDocument Parse(string text)
+    {
+        try
+        {
+            return JsonDocument.Parse(text, Options);
+        }
+        catch (JsonException ex)
+        {
+            long line = (ex.LineNumber ?? 0) + 1, position = (ex.BytePositionInLine ?? 0) + 1;
+            string detail = ex.Message;
+            int cut = detail.IndexOf(" LineNumber:", StringComparison.Ordinal);
+            if (cut > 0) detail = detail[..cut].TrimEnd();
+            throw new SceneFormatException(string.Empty, $"invalid JSON at line {line}, position {position}: {detail}", ex);
+        }
+    }
+
+    public static string Kind(JsonElement e) => e.ValueKind switch
+    {
+        JsonValueKind.Object => "an object",
+        JsonValueKind.Array => "an array",
+        JsonValueKind.String => $"the string \"{e.GetString()}\"",
+        JsonValueKind.Number => $"the number {e.GetRawText()}",
+        JsonValueKind.True => "true",
+        JsonValueKind.False => "false",
+        JsonValueKind.Null => "null",
+        _ => e.ValueKind.ToString(),
+    };
+
+    public static float Float(JsonElement e, string path)
+    {
+        if (e.ValueKind != JsonValueKind.Number)
+            throw new SceneFormatException(path, $"expected a number, got {Kind(e)}.");
+        // Parsed straight to float (not through double) so that a float written in its shortest
+        // round-trippable form reads back to the same bits.
+        if (!e.TryGetSingle(out float f) || !float.IsFinite(f))
+            throw new SceneFormatException(path, $"the number {e.GetRawText()} is out of range for a float.");
+        return f;
+    }
+
+    public static int Int(JsonElement e, string path)
+    {
+        if (e.ValueKind != JsonValueKind.Number || !e.TryGetInt32(out int v))
+            throw new SceneFormatException(path, $"expected an integer, got {Kind(e)}.");
+        return v;
+    }
+
+    public static bool Bool(JsonElement e, string path) => e.ValueKind switch
+    {
+        JsonValueKind.True => true,
+        JsonValueKind.False => false,
+        _ => throw new SceneFormatException(path, $"expected true or false, got {Kind(e)}."),
+    };
+
+    public static string String(JsonElement e, string path) =>
+        e.ValueKind == JsonValueKind.String ? e.GetString()! : throw new SceneFormatException(path, $"expected a string, got {Kind(e)}.");
+
+    public static IReadOnlyList<(JsonElement Value, string Path)> Array(JsonElement e, string path)
+    {
+        if (e.ValueKind != JsonValueKind.Array)
+            throw new SceneFormatException(path, $"expected an array, got {Kind(e)}.");
+        var list = new List<(JsonElement, string)>(e.GetArrayLength());
+        int i = 0;
+        foreach (var item in e.EnumerateArray())
+            list.Add((item, $"{path}[{i++}]"));
+        return list;
+    }
+
+    private static float[] Numbers(JsonElement e, string path, int count, string what)
+    {
+        var items = Array(e, path);
+        if (items.Count != count)
+            throw new SceneFormatException(path, $"{what} needs {count} numbers, got {items.Count}.");
+        var values = new float[count];
+        for (int i = 0; i < count; i++)
+            values[i] = Float(items[i].Value, items[i].Path);
+        return values;
+    }
+
+    /// <summary>A vector written as [x, y, z].</summary>
+    public static Vector3 Vec3(JsonElement e, string path)
+    {
+        var v = Numbers(e, path, 3, "a vector [x, y, z]");
+        return new Vector3(v[0], v[1], v[2]);
+    }
+
+    /// <summary>A rotation written as [w, x, y, z] (retail order); must be non-zero; returned normalized.</summary>
+    public static Quaternion Rotation(JsonElement e, string path)
+    {
+        var v = Numbers(e, path, 4, "a quaternion [w, x, y, z]");
+        try
+        {
+            return Guard.Rotation(new Quaternion(v[1], v[2], v[3], v[0]), path);
+        }
+        catch (ArgumentException ex)
+        {
+            throw SceneFormatException.Wrap(path, ex);
+        }
+    }
+
+    /// <summary>A quaternion written as [w, x, y, z], read exactly as written (no normalization); must be non-zero.</summary>
+    public static Quaternion RawQuaternion(JsonElement e, string path)
+    {
+        var v = Numbers(e, path, 4, "a quaternion [w, x, y, z]");
+        var q = new Quaternion(v[1], v[2], v[3], v[0]);
+        if (q.LengthSquared() < 1e-12f)
+            throw new SceneFormatException(path, "quaternion has zero length.");
+        return q;
+    }
+
+    /// <summary>An id written as a hex string ("0x7000_0001" or "0x70000001") or a non-negative integer.</summary>
+    public static uint Id(JsonElement e, string path)
+    {
+        if (e.ValueKind == JsonValueKind.Number)
+        {
+            if (e.TryGetUInt32(out uint n)) return n;
+            throw new SceneFormatException(path, $"expected a 32-bit unsigned id, got {e.GetRawText()}.");
+        }
+        if (e.ValueKind == JsonValueKind.String && TryHex(e.GetString()!, out uint h))
+            return h;
+        throw new SceneFormatException(path, $"expected an id (a hex string such as \"0x7000_0001\" or an integer), got {Kind(e)}.");
+    }
+
+    private static bool TryHex(string s, out uint value)
+    {
+        value = 0;
+        if (!s.StartsWith("0x", StringComparison.OrdinalIgnoreCase)) return false;
+        string digits = s[2..].Replace("_", string.Empty, StringComparison.Ordinal);
+        return digits.Length is > 0 and <= 8 && uint.TryParse(digits, NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out value);
+    }
+
+    /// <summary>Flags written as a hex string, an integer, or an array of flag names.</summary>
+    public static TEnum Flags<TEnum>(JsonElement e, string path) where TEnum : struct, Enum
+    {
+        ulong bits;
+        if (e.ValueKind == JsonValueKind.Array)
+        {
+            bits = 0;
+            foreach (var (item, itemPath) in Array(e, path))
+            {
+                string name = String(item, itemPath);
+                if (!Enum.TryParse<TEnum>(name, ignoreCase: false, out var flag) || !Enum.IsDefined(flag) || int.TryParse(name, out _))
+                    throw new SceneFormatException(itemPath, $"unknown {typeof(TEnum).Name} flag \"{name}\" (known: {string.Join(", ", Enum.GetNames<TEnum>())}).");
+                bits |= Convert.ToUInt64(flag, CultureInfo.InvariantCulture);
+            }
+        }
+        else
+        {
+            bits = Id(e, path);
+        }
+        ulong max = Enum.GetUnderlyingType(typeof(TEnum)) == typeof(byte) ? 0xFFul : 0xFFFF_FFFFul;
+        if (bits > max)
+            throw new SceneFormatException(path, $"0x{bits:X} does not fit {typeof(TEnum).Name}.");
+        return (TEnum)Enum.ToObject(typeof(TEnum), bits);
+    }
+
+    /// <summary>Formats a float so that it reads back to the same value.</summary>
+    public static string F(float value) => value.ToString("R", CultureInfo.InvariantCulture);
+}

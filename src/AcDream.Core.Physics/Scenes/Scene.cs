@@ -1,0 +1,57 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// A loaded scene, ready to run: the world (cells, buildings, objects) and the movers with their motions.
+/// Movers do not see each other: each walks alone through the same world (see docs/scene-format.md).
+/// </summary>
+public sealed class Scene
+{
+    internal Scene(string name, string description, string sha256, PhysicsWorld world, IReadOnlyList<SceneMover> movers)
+    {
+        Name = name;
+        Description = description;
+        Sha256 = sha256;
+        World = world;
+        Movers = movers;
+    }
+
+    /// <summary>The scene's name (its "name" field, or the file name).</summary>
+    public string Name { get; }
+    /// <summary>The scene's description, or empty.</summary>
+    public string Description { get; }
+    /// <summary>The SHA-256 (lower-case hex) of the scene text with CRLF line ends read as LF.</summary>
+    public string Sha256 { get; }
+    /// <summary>The world.</summary>
+    public PhysicsWorld World { get; }
+    /// <summary>The movers, in file order.</summary>
+    public IReadOnlyList<SceneMover> Movers { get; }
+}
+
+/// <summary>A mover of a scene: what it is, where it starts, and its requested offset for every frame.</summary>
+public sealed class SceneMover
+{
+    private readonly Vector3[] _motion;
+
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion)
+    {
+        Name = name;
+        Description = description;
+        Start = start;
+        _motion = motion;
+    }
+
+    /// <summary>The mover's name, unique in its scene.</summary>
+    public string Name { get; }
+    /// <summary>What the mover is.</summary>
+    public MoverDescription Description { get; }
+    /// <summary>Its state before the first frame.</summary>
+    public MoverState Start { get; }
+    /// <summary>The requested offset of each frame (landblock space), repeats expanded.</summary>
+    public ReadOnlySpan<Vector3> Motion => _motion;
+    /// <summary>How many frames the mover walks.</summary>
+    public int FrameCount => _motion.Length;
+}

@@ -1,0 +1,522 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using System.Security.Cryptography;
+using System.Text;
+using System.Text.Json;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>
+/// Reads scene files (JSON, format version 1, described in docs/scene-format.md) into a <see cref="Scene"/>.
+/// Everything is validated; any problem is a <see cref="SceneFormatException"/> whose message starts with
+/// the JSON path of the bad value. Loading allocates freely and is never on the engine's per-frame path.
+/// </summary>
+public static class SceneLoader
+{
+    /// <summary>The scene format version this loader reads.</summary>
+    public const int FormatVersion = 1;
+
+    /// <summary>The most frames one mover may request (a guard against typos such as a count of 1e9).</summary>
+    public const int MaxFramesPerMover = 100_000;
+
+    /// <summary>Loads a scene file from disk.</summary>
+    /// <param name="path">The file.</param>
+    /// <exception cref="SceneFormatException">The file is malformed.</exception>
+    /// <exception cref="IOException">The file cannot be read.</exception>
+    public static Scene LoadFile(string path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        return Load(File.ReadAllText(path), Path.GetFileNameWithoutExtension(path));
+    }
+
+    /// <summary>Loads a scene from its JSON text.</summary>
+    /// <param name="json">The scene text.</param>
+    /// <param name="defaultName">The name used when the scene has no "name" field.</param>
+    /// <exception cref="SceneFormatException">The text is malformed.</exception>
+    public static Scene Load(string json, string defaultName = "scene")
+    {
+        ArgumentNullException.ThrowIfNull(json);
+        using var doc = JsonRead.Parse(json);
+        return new Reader(defaultName, Sha256Of(json)).Read(doc.RootElement);
+    }
+
+    /// <summary>The SHA-256 (lower-case hex) of a scene text, with CRLF line ends read as LF so checkouts on any platform agree.</summary>
+    public static string Sha256Of(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        var bytes = Encoding.UTF8.GetBytes(text.Replace("\r\n", "\n", StringComparison.Ordinal));
+        return Convert.ToHexStringLower(SHA256.HashData(bytes));
+    }
+
+    private sealed class Reader(string defaultName, string sha)
+    {
+        private readonly Dictionary<string, PhysicsModel> _models = new(StringComparer.Ordinal);
+        private readonly Dictionary<string, PhysicsSetup> _setups = new(StringComparer.Ordinal);
+        private readonly List<uint> _landblocks = new();
+        private readonly PhysicsWorld _world = new();
+
+        public Scene Read(JsonElement root)
+        {
+            var o = new JsonObj(root, string.Empty);
+            int version = o.Int("version", -1);
+            if (!o.Has("version"))
+                throw new SceneFormatException("version", "is required (this loader reads version 1).");
+            if (version != FormatVersion)
+                throw new SceneFormatException("version", $"unsupported scene format version {version} (this loader reads version {FormatVersion}).");
+            string name = o.String("name", null) ?? defaultName;
+            string description = o.String("description", null) ?? string.Empty;
+
+            if (o.Opt("models") is { } models)
+                foreach (var (key, value) in new JsonObj(models, "models").Fields())
+                    _models.Add(key, ReadModel(value, $"models.{key}"));
+            if (o.Opt("setups") is { } setups)
+                foreach (var (key, value) in new JsonObj(setups, "setups").Fields())
+                    _setups.Add(key, ReadSetup(value, $"setups.{key}"));
+            foreach (var (value, path) in o.Array("landblocks"))
+                ReadLandblock(value, path);
+            if (_landblocks.Count == 0)
+                throw new SceneFormatException("landblocks", "a scene needs at least one landblock.");
+            var envCells = o.Array("envCells", optional: true);
+            var pendingPortals = new List<(CellPortal Portal, string Path)>();
+            foreach (var (value, path) in envCells)
+                ReadEnvCell(value, path, pendingPortals);
+            foreach (var (portal, path) in pendingPortals)
+                if (!portal.LeadsOutside && _world.Cells.Get(portal.OtherCellId) is null)
+                    throw new SceneFormatException(path, $"unknown cell 0x{portal.OtherCellId:X8}.");
+            foreach (var (value, path) in o.Array("buildings", optional: true))
+                ReadBuilding(value, path);
+            foreach (var (value, path) in o.Array("objects", optional: true))
+                ReadObject(value, path);
+            var movers = new List<SceneMover>();
+            var names = new HashSet<string>(StringComparer.Ordinal);
+            foreach (var (value, path) in o.Array("movers"))
+            {
+                var mover = ReadMover(value, path);
+                if (!names.Add(mover.Name))
+                    throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
+                movers.Add(mover);
+            }
+            if (movers.Count == 0)
+                throw new SceneFormatException("movers", "a scene needs at least one mover.");
+            o.End();
+            return new Scene(name, description, sha, _world, movers);
+        }
+
+        private static T Checked<T>(string path, Func<T> build)
+        {
+            try
+            {
+                return build();
+            }
+            catch (ArgumentException ex)
+            {
+                throw SceneFormatException.Wrap(path, ex);
+            }
+            catch (InvalidOperationException ex)
+            {
+                throw new SceneFormatException(path, ex.Message, ex);
+            }
+        }
+
+        private static void Checked(string path, Action action) => Checked(path, () => { action(); return 0; });
+
+        // ---- geometry ----
+
+        private static PolygonSides ReadSides(JsonObj o)
+        {
+            string? sides = o.String("sides", null);
+            return sides switch
+            {
+                null or "single" => PolygonSides.Single,
+                "double" => PolygonSides.Double,
+                "both" => PolygonSides.Both,
+                _ => throw new SceneFormatException(o.Child("sides"), $"expected \"single\", \"double\" or \"both\", got \"{sides}\"."),
+            };
+        }
+
+        private static Polygon ReadPolygon(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            var items = o.Array("vertices");
+            if (items.Count < 3)
+                throw new SceneFormatException(o.Child("vertices"), $"a polygon needs at least 3 vertices, got {items.Count}.");
+            var vertices = new Vector3[items.Count];
+            for (int i = 0; i < items.Count; i++)
+                vertices[i] = JsonRead.Vec3(items[i].Value, items[i].Path);
+            var sides = ReadSides(o);
+            o.End();
+            return Checked(path, () => new Polygon(vertices, sides, path));
+        }
+
+        private static Sphere ReadSphere(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            var s = new Sphere(o.Vec3("center"), o.Float("radius"));
+            o.End();
+            Checked(path, () => Guard.Sphere(s, path));
+            return s;
+        }
+
+        private static (Vector3 Min, Vector3 Max) ReadBox(JsonObj o)
+        {
+            var min = o.Vec3("min");
+            var max = o.Vec3("max");
+            o.End();
+            if (!(min.X < max.X && min.Y < max.Y && min.Z < max.Z))
+                throw new SceneFormatException(o.Child("max"), $"every component must be greater than min's, got min {min}, max {max}.");
+            return (min, max);
+        }
+
+        private static PhysicsModel ReadModel(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            int kinds = (o.Has("polygons") ? 1 : 0) + (o.Has("box") ? 1 : 0) + (o.Has("cellBox") ? 1 : 0);
+            if (kinds != 1)
+                throw new SceneFormatException(path, "a model needs exactly one of \"polygons\" (with optional \"nodes\"), \"box\" or \"cellBox\".");
+            BspTree tree;
+            if (o.Opt("box") is { } box)
+            {
+                var (min, max) = ReadBox(new JsonObj(box, o.Child("box")));
+                var sides = ReadSides(o);
+                tree = Checked(o.Child("box"), () => BspShapes.Box(min, max, sides));
+            }
+            else if (o.Opt("cellBox") is { } cellBox)
+            {
+                var (min, max) = ReadBox(new JsonObj(cellBox, o.Child("cellBox")));
+                tree = CellBox(min, max);
+            }
+            else
+            {
+                var polygons = new List<Polygon>();
+                foreach (var (value, p) in o.Array("polygons"))
+                    polygons.Add(ReadPolygon(value, p));
+                if (o.Opt("nodes") is { } nodes)
+                {
+                    var list = new List<BspNodeData>();
+                    foreach (var (value, p) in JsonRead.Array(nodes, o.Child("nodes")))
+                        list.Add(ReadNode(value, p, polygons));
+                    tree = Checked(path, () => BspTree.Create(polygons, list, path));
+                }
+                else
+                {
+                    if (polygons.Count == 0)
+                        throw new SceneFormatException(o.Child("polygons"), "at least one polygon is needed to compile a BSP tree.");
+                    tree = Checked(path, () => BspCompiler.Compile(polygons, o.Child("polygons")));
+                }
+            }
+            Sphere? bounds = o.Opt("boundingSphere") is { } b ? ReadSphere(b, o.Child("boundingSphere")) : null;
+            o.End();
+            return Checked(path, () => new PhysicsModel(tree, bounds, path));
+        }
+
+        /// <summary>A containment tree for an axis-aligned box: a chain of its six faces' planes, facing inward.</summary>
+        private static BspTree CellBox(Vector3 min, Vector3 max)
+        {
+            var center = (min + max) * 0.5f;
+            var bounds = new Sphere(center, Vector3.Distance(center, max));
+            Plane[] planes =
+            [
+                new(-Vector3.UnitX, max.X), new(Vector3.UnitX, -min.X),
+                new(-Vector3.UnitY, max.Y), new(Vector3.UnitY, -min.Y),
+                new(-Vector3.UnitZ, max.Z), new(Vector3.UnitZ, -min.Z),
+            ];
+            var nodes = new BspNodeData[6];
+            for (int i = 0; i < 6; i++)
+                nodes[i] = new BspNodeData { SplitPlane = planes[i], Front = i < 5 ? i + 1 : -1, Back = -1, Bounds = bounds };
+            return BspTree.Create(Array.Empty<Polygon>(), nodes, "cellBox");
+        }
+
+        private static BspNodeData ReadNode(JsonElement e, string path, List<Polygon> polygons)
+        {
+            var o = new JsonObj(e, path);
+            bool leaf = o.Bool("leaf", false);
+            var indices = new List<int>();
+            foreach (var (value, p) in o.Array("polygons", optional: true))
+                indices.Add(JsonRead.Int(value, p));
+            Sphere? bounds = o.Opt("bounds") is { } b ? ReadSphere(b, o.Child("bounds")) : null;
+            if (leaf)
+            {
+                bool solid = o.Bool("solid", false);
+                o.End();
+                return new BspNodeData { IsLeaf = true, Solid = solid, Polygons = indices, Bounds = bounds };
+            }
+            Plane plane;
+            if (o.Opt("planeOf") is { } of)
+            {
+                if (o.Has("splitPlane"))
+                    throw new SceneFormatException(o.Child("planeOf"), "give either \"splitPlane\" or \"planeOf\", not both.");
+                int index = JsonRead.Int(of, o.Child("planeOf"));
+                if (index < 0 || index >= polygons.Count)
+                    throw new SceneFormatException(o.Child("planeOf"), $"polygon index {index} is out of range 0..{polygons.Count - 1}.");
+                plane = polygons[index].Plane;
+            }
+            else
+            {
+                var po = o.Obj("splitPlane");
+                plane = new Plane(po.Vec3("normal"), po.Float("d"));
+                po.End();
+            }
+            int front = o.Int("front", -1), back = o.Int("back", -1);
+            o.End();
+            return new BspNodeData { SplitPlane = plane, Front = front, Back = back, Polygons = indices, Bounds = bounds };
+        }
+
+        private PhysicsModel Model(JsonElement e, string path)
+        {
+            string name = JsonRead.String(e, path);
+            return _models.TryGetValue(name, out var model)
+                ? model
+                : throw new SceneFormatException(path, $"unknown model \"{name}\" (known: {Known(_models.Keys)}).");
+        }
+
+        private static string Known(IEnumerable<string> names)
+        {
+            var list = new List<string>(names);
+            return list.Count == 0 ? "none" : string.Join(", ", list);
+        }
+
+        private PhysicsSetup ReadSetup(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            var parts = new List<SetupPart>();
+            foreach (var (value, p) in o.Array("parts", optional: true))
+            {
+                var po = new JsonObj(value, p);
+                PhysicsModel? model = po.Opt("model") is { } m ? Model(m, po.Child("model")) : null;
+                var frame = new Frame(po.Opt("origin") is { } origin ? JsonRead.Vec3(origin, po.Child("origin")) : Vector3.Zero, po.Rotation("rotation"));
+                po.End();
+                parts.Add(new SetupPart(model, frame));
+            }
+            var cyls = new List<CylSphere>();
+            foreach (var (value, p) in o.Array("cylSpheres", optional: true))
+            {
+                var co = new JsonObj(value, p);
+                var c = new CylSphere(co.Vec3("lowPoint"), co.Float("radius"), co.Float("height"));
+                co.End();
+                Checked(p, () => Guard.CylSphere(c, p));
+                cyls.Add(c);
+            }
+            var spheres = new List<Sphere>();
+            foreach (var (value, p) in o.Array("spheres", optional: true))
+                spheres.Add(ReadSphere(value, p));
+            var setup = new PhysicsSetup
+            {
+                Parts = parts,
+                CylSpheres = cyls,
+                Spheres = spheres,
+                Height = o.Float("height", 0f),
+                Radius = o.Float("radius", 0f),
+                StepUpHeight = o.Float("stepUpHeight", 0f),
+                StepDownHeight = o.Float("stepDownHeight", 0f),
+            };
+            o.End();
+            Checked(path, () => setup.Validate(path));
+            return setup;
+        }
+
+        // ---- cells ----
+
+        private void ReadLandblock(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            uint id = o.Id("id");
+            if (id > 0xFFFF)
+                throw new SceneFormatException(o.Child("id"), $"0x{id:X} is not a 16-bit landblock id.");
+            Terrain terrain;
+            if (o.Has("height") == o.Has("heights"))
+                throw new SceneFormatException(path, "a landblock needs exactly one of \"height\" (flat) or \"heights\" (81 values, [x * 9 + y]).");
+            if (o.Opt("height") is { } h)
+            {
+                terrain = Terrain.Flat(id, JsonRead.Float(h, o.Child("height")));
+            }
+            else
+            {
+                var items = o.Array("heights");
+                if (items.Count != Terrain.VerticesPerSide * Terrain.VerticesPerSide)
+                    throw new SceneFormatException(o.Child("heights"), $"expected 81 values (9×9), got {items.Count}.");
+                var heights = new float[items.Count];
+                for (int i = 0; i < items.Count; i++)
+                    heights[i] = JsonRead.Float(items[i].Value, items[i].Path);
+                terrain = new Terrain(id, heights, path);
+            }
+            o.End();
+            Checked(o.Child("id"), () => _world.Cells.AddLandblock(terrain));
+            _landblocks.Add(id);
+        }
+
+        private void ReadEnvCell(JsonElement e, string path, List<(CellPortal, string)> pending)
+        {
+            var o = new JsonObj(e, path);
+            uint id = o.Id("id");
+            var frame = new Frame(o.Vec3("position"), o.Rotation("rotation"));
+            BspTree? physics = o.Opt("physicsModel") is { } pm ? Model(pm, o.Child("physicsModel")).Bsp : null;
+            var cellBsp = Model(o.Req("cellModel"), o.Child("cellModel")).Bsp;
+            var portals = new List<CellPortal>();
+            foreach (var (value, p) in o.Array("portals", optional: true))
+            {
+                var po = new JsonObj(value, p);
+                var polygon = ReadPolygon(po.Req("polygon"), po.Child("polygon"));
+                var other = po.Req("otherCell");
+                uint otherId = other.ValueKind == JsonValueKind.String && other.GetString() == "outside"
+                    ? CellPortal.Outside
+                    : JsonRead.Id(other, po.Child("otherCell"));
+                bool side = JsonRead.Bool(po.Req("portalSide"), po.Child("portalSide"));
+                po.End();
+                var portal = new CellPortal(polygon, otherId, side);
+                portals.Add(portal);
+                pending.Add((portal, po.Child("otherCell")));
+            }
+            o.End();
+            if (!_landblocks.Contains(LandDefs.Landblock(id)))
+                throw new SceneFormatException(o.Child("id"), $"cell 0x{id:X8} is not in a landblock of the scene.");
+            Checked(o.Child("id"), () => _world.Cells.AddEnvCell(new EnvCell(id, frame, physics, cellBsp, portals)));
+        }
+
+        private void ReadBuilding(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            var shell = Model(o.Req("shell"), o.Child("shell"));
+            var position = ReadPlacement(o);
+            var entrances = new List<uint>();
+            foreach (var (value, p) in o.Array("entranceCells", optional: true))
+            {
+                uint id = JsonRead.Id(value, p);
+                if (_world.Cells.Get(id) is not EnvCell)
+                    throw new SceneFormatException(p, $"0x{id:X8} is not an env cell of the scene.");
+                entrances.Add(id);
+            }
+            o.End();
+            Checked(path, () => _world.Cells.AddBuilding(new Building(shell, position, entrances)));
+        }
+
+        /// <summary>Reads "cell" (optional for outdoor placements in a one-landblock scene), "position" and "rotation".</summary>
+        private Position ReadPlacement(JsonObj o)
+        {
+            var origin = o.Vec3("position");
+            var rotation = o.Rotation("rotation");
+            uint cell;
+            if (o.Opt("cell") is { } c)
+            {
+                cell = JsonRead.Id(c, o.Child("cell"));
+                if (_world.Cells.Get(cell) is null)
+                    throw new SceneFormatException(o.Child("cell"), $"unknown cell 0x{cell:X8}.");
+            }
+            else
+            {
+                if (_landblocks.Count != 1)
+                    throw new SceneFormatException(o.Child("cell"), "is required when the scene has more than one landblock.");
+                cell = LandDefs.LandCellAt(_landblocks[0], origin);
+                if (cell == 0)
+                    throw new SceneFormatException(o.Child("position"), $"{origin} is outside landblock 0x{_landblocks[0]:X4} (0..192 m on X and Y).");
+            }
+            return new Position(cell, new Frame(origin, rotation));
+        }
+
+        private PhysicsSetup Setup(JsonElement e, string path)
+        {
+            string name = JsonRead.String(e, path);
+            return _setups.TryGetValue(name, out var setup)
+                ? setup
+                : throw new SceneFormatException(path, $"unknown setup \"{name}\" (known: {Known(_setups.Keys)}).");
+        }
+
+        private void ReadObject(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            uint id = o.Id("id");
+            var setup = Setup(o.Req("setup"), o.Child("setup"));
+            var position = ReadPlacement(o);
+            float scale = o.Float("scale", 1f);
+            Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
+            var state = o.Opt("state") is { } s ? JsonRead.Flags<PhysicsState>(s, o.Child("state")) : PhysicsState.None;
+            var flags = o.Opt("flags") is { } f ? JsonRead.Flags<ShadowFlags>(f, o.Child("flags")) : ShadowFlags.None;
+            o.End();
+            if (_world.Objects.Contains(id))
+                throw new SceneFormatException(o.Child("id"), $"object 0x{id:X8} appears twice.");
+            Checked(path, () => _world.Objects.Register(id, setup, position, scale, state, flags));
+        }
+
+        // ---- movers ----
+
+        private SceneMover ReadMover(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            string name = o.String("name");
+            uint id = o.Opt("id") is { } idValue ? JsonRead.Id(idValue, o.Child("id")) : 0x5000_0001;
+            if (o.Has("setup") == o.Has("spheres"))
+                throw new SceneFormatException(path, "a mover needs exactly one of \"setup\" (its spheres and step heights) or \"spheres\".");
+            Sphere[] spheres;
+            float stepUp, stepDown;
+            if (o.Opt("setup") is { } s)
+            {
+                var setup = Setup(s, o.Child("setup"));
+                spheres = [.. setup.Spheres];
+                if (spheres.Length is < 1 or > 2)
+                    throw new SceneFormatException(o.Child("setup"), $"a mover's setup needs one or two spheres, \"{s.GetString()}\" has {spheres.Length}.");
+                stepUp = o.Float("stepUpHeight", setup.StepUpHeight);
+                stepDown = o.Float("stepDownHeight", setup.StepDownHeight);
+            }
+            else
+            {
+                var items = o.Array("spheres");
+                if (items.Count is < 1 or > 2)
+                    throw new SceneFormatException(o.Child("spheres"), $"a mover has one or two spheres, got {items.Count}.");
+                spheres = new Sphere[items.Count];
+                for (int i = 0; i < items.Count; i++)
+                    spheres[i] = ReadSphere(items[i].Value, items[i].Path);
+                stepUp = o.Float("stepUpHeight");
+                stepDown = o.Float("stepDownHeight");
+            }
+            Checked(o.Child("stepUpHeight"), () => Guard.NonNegative(stepUp, o.Child("stepUpHeight")));
+            Checked(o.Child("stepDownHeight"), () => Guard.NonNegative(stepDown, o.Child("stepDownHeight")));
+            var state = o.Opt("state") is { } st ? JsonRead.Flags<PhysicsState>(st, o.Child("state")) : PhysicsState.Gravity;
+            var info = o.Opt("objectInfo") is { } oi ? JsonRead.Flags<ObjectInfoState>(oi, o.Child("objectInfo")) : ObjectInfoState.None;
+            if ((info & (ObjectInfoState.Contact | ObjectInfoState.OnWalkable)) != 0)
+                throw new SceneFormatException(o.Child("objectInfo"), "Contact and OnWalkable are per-frame state; use \"floorZ\" or \"airborne\".");
+            float scale = o.Float("scale", 1f);
+            Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
+            var position = ReadPlacement(o);
+            if (o.Has("floorZ") == o.Bool("airborne", false))
+                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height) or \"airborne\": true.");
+            var start = o.Opt("floorZ") is { } fz
+                ? MoverState.OnFloor(position, JsonRead.Float(fz, o.Child("floorZ")))
+                : MoverState.Airborne(position);
+            var motion = ReadMotion(o.Req("motion"), o.Child("motion"));
+            o.End();
+            var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
+            return new SceneMover(name, description, start, motion);
+        }
+
+        private static Vector3[] ReadMotion(JsonElement e, string path)
+        {
+            var frames = new List<Vector3>();
+            foreach (var (value, p) in JsonRead.Array(e, path))
+            {
+                if (value.ValueKind == JsonValueKind.Array)
+                {
+                    frames.Add(JsonRead.Vec3(value, p));
+                }
+                else
+                {
+                    var o = new JsonObj(value, p);
+                    var offset = o.Vec3("offset");
+                    int count = o.Int("count", 1);
+                    o.End();
+                    if (count < 1)
+                        throw new SceneFormatException(o.Child("count"), $"must be 1 or more, got {count}.");
+                    if ((long)frames.Count + count > MaxFramesPerMover)
+                        throw new SceneFormatException(o.Child("count"), $"a mover may walk at most {MaxFramesPerMover} frames.");
+                    for (int i = 0; i < count; i++)
+                        frames.Add(offset);
+                }
+                if (frames.Count > MaxFramesPerMover)
+                    throw new SceneFormatException(p, $"a mover may walk at most {MaxFramesPerMover} frames.");
+            }
+            if (frames.Count == 0)
+                throw new SceneFormatException(path, "a mover needs at least one frame of motion.");
+            return [.. frames];
+        }
+    }
+}

@@ -1,0 +1,58 @@
+using System;
+using System.Collections.Generic;
+using System.Reflection;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>The diagnostics events of one frame of one mover, handed to a <see cref="SceneRunner"/> callback.</summary>
+/// <param name="MoverIndex">The mover's index in the scene.</param>
+/// <param name="MoverName">The mover's name.</param>
+/// <param name="Frame">The frame index (0-based).</param>
+/// <param name="Events">The frame's events, in order; valid only during the callback.</param>
+public readonly record struct FrameDiagnostics(int MoverIndex, string MoverName, int Frame, IReadOnlyList<TransitionEvent> Events);
+
+/// <summary>
+/// Runs a scene: every mover, alone, frame by frame through one <see cref="PhysicsEngine"/>, each frame
+/// requesting the mover's current position plus that frame's offset (same cell label and orientation),
+/// as a client's per-frame motion would.
+/// </summary>
+public static class SceneRunner
+{
+    /// <summary>The library's informational version (written into trajectory headers).</summary>
+    public static string LibraryVersion { get; } =
+        typeof(SceneRunner).Assembly.GetCustomAttribute<AssemblyInformationalVersionAttribute>()?.InformationalVersion
+        ?? typeof(SceneRunner).Assembly.GetName().Version?.ToString() ?? "unknown";
+
+    /// <summary>Runs every mover of the scene and records the trajectory.</summary>
+    /// <param name="scene">The scene.</param>
+    /// <param name="diagnostics">When set, a <see cref="TransitionEventLog"/> is attached and this is called after every frame with its events.</param>
+    public static Trajectory Run(Scene scene, Action<FrameDiagnostics>? diagnostics = null)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        var engine = new PhysicsEngine(scene.World);
+        TransitionEventLog? log = diagnostics is null ? null : new TransitionEventLog();
+        engine.Observer = log;
+        var movers = new List<MoverTrajectory>(scene.Movers.Count);
+        for (int m = 0; m < scene.Movers.Count; m++)
+        {
+            var mover = scene.Movers[m];
+            var frames = new List<TrajectoryFrame>(mover.FrameCount);
+            var state = mover.Start;
+            for (int f = 0; f < mover.FrameCount; f++)
+            {
+                var target = state.Position;
+                target.Frame.Origin += mover.Motion[f];
+                var result = engine.Resolve(mover.Description, state, target);
+                frames.Add(TrajectoryFrame.From(target, result));
+                state = result.Next;
+                if (log is not null)
+                {
+                    diagnostics!(new FrameDiagnostics(m, mover.Name, f, log.Events));
+                    log.Clear();
+                }
+            }
+            movers.Add(new MoverTrajectory(mover.Name, frames));
+        }
+        return new Trajectory(scene.Name, scene.Sha256, LibraryVersion, movers);
+    }
+}

@@ -1,0 +1,279 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Numerics;
+using System.Text;
+using System.Text.Json;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>One frame of one mover: the requested target (the input) and everything the engine resolved (the outputs).</summary>
+public sealed class TrajectoryFrame
+{
+    /// <summary>The requested target position (input).</summary>
+    public Position Target { get; init; }
+    /// <summary>The resolved origin, landblock-local.</summary>
+    public Vector3 Position { get; init; }
+    /// <summary>The resolved cell id.</summary>
+    public uint Cell { get; init; }
+    /// <summary>The mover touches a contact plane.</summary>
+    public bool Contact { get; init; }
+    /// <summary>The mover stands on walkable ground.</summary>
+    public bool OnWalkable { get; init; }
+    /// <summary>The contact plane is valid (the mover is in contact with it at the end of the frame).</summary>
+    public bool ContactPlaneValid { get; init; }
+    /// <summary>The (last known) contact plane.</summary>
+    public Plane ContactPlane { get; init; }
+    /// <summary>The cell whose landblock space the contact plane is in; 0 when none is known.</summary>
+    public uint ContactPlaneCell { get; init; }
+    /// <summary>A collision normal was recorded this frame.</summary>
+    public bool CollisionNormalValid { get; init; }
+    /// <summary>The collision normal.</summary>
+    public Vector3 CollisionNormal { get; init; }
+    /// <summary>The mover is sliding.</summary>
+    public bool SlidingNormalValid { get; init; }
+    /// <summary>The sliding normal.</summary>
+    public Vector3 SlidingNormal { get; init; }
+    /// <summary>The ids of the objects collided with, in the engine's order.</summary>
+    public IReadOnlyList<uint> CollidedObjects { get; init; } = Array.Empty<uint>();
+    /// <summary>The move was accepted.</summary>
+    public bool Succeeded { get; init; }
+
+    /// <summary>Builds a frame from a target and the engine's result (copies the collided ids).</summary>
+    public static TrajectoryFrame From(Position target, in MoveResult result)
+    {
+        var next = result.Next;
+        return new TrajectoryFrame
+        {
+            Target = target,
+            Position = next.Position.Origin,
+            Cell = next.Position.CellId,
+            Contact = next.Contact,
+            OnWalkable = next.OnWalkable,
+            ContactPlaneValid = next.Contact,
+            ContactPlane = next.ContactPlane,
+            ContactPlaneCell = next.ContactPlaneCellId,
+            CollisionNormalValid = result.CollisionNormalValid,
+            CollisionNormal = result.CollisionNormal,
+            SlidingNormalValid = next.SlidingNormalValid,
+            SlidingNormal = next.SlidingNormal,
+            CollidedObjects = result.CollidedObjects.ToArray(),
+            Succeeded = result.Succeeded,
+        };
+    }
+}
+
+/// <summary>The frames of one mover of a scene.</summary>
+public sealed class MoverTrajectory
+{
+    /// <summary>Creates a mover's trajectory.</summary>
+    public MoverTrajectory(string name, IReadOnlyList<TrajectoryFrame> frames)
+    {
+        Name = name ?? throw new ArgumentNullException(nameof(name));
+        Frames = frames ?? throw new ArgumentNullException(nameof(frames));
+    }
+
+    /// <summary>The mover's name in the scene.</summary>
+    public string Name { get; }
+    /// <summary>Its frames, in order.</summary>
+    public IReadOnlyList<TrajectoryFrame> Frames { get; }
+}
+
+/// <summary>
+/// A recorded run of a scene: a header (format version, the scene's SHA-256, the library version) and,
+/// per mover, every frame's input and outputs. Written as JSON, one frame per line, floats round-trippable.
+/// </summary>
+public sealed class Trajectory
+{
+    /// <summary>The trajectory format version this library writes and reads.</summary>
+    public const int FormatVersion = 1;
+
+    /// <summary>Creates a trajectory.</summary>
+    public Trajectory(string sceneName, string sceneSha256, string libraryVersion, IReadOnlyList<MoverTrajectory> movers)
+    {
+        SceneName = sceneName ?? throw new ArgumentNullException(nameof(sceneName));
+        SceneSha256 = sceneSha256 ?? throw new ArgumentNullException(nameof(sceneSha256));
+        LibraryVersion = libraryVersion ?? throw new ArgumentNullException(nameof(libraryVersion));
+        Movers = movers ?? throw new ArgumentNullException(nameof(movers));
+    }
+
+    /// <summary>The scene's name.</summary>
+    public string SceneName { get; }
+    /// <summary>The SHA-256 of the scene text it was recorded from (see <see cref="SceneLoader.Sha256Of"/>).</summary>
+    public string SceneSha256 { get; }
+    /// <summary>The library's informational version that recorded it.</summary>
+    public string LibraryVersion { get; }
+    /// <summary>The movers, in scene order.</summary>
+    public IReadOnlyList<MoverTrajectory> Movers { get; }
+
+    /// <summary>How many frames in all.</summary>
+    public int FrameCount
+    {
+        get
+        {
+            int n = 0;
+            foreach (var m in Movers) n += m.Frames.Count;
+            return n;
+        }
+    }
+
+    /// <summary>Writes the trajectory as JSON text (LF line ends, one frame per line).</summary>
+    public string ToJson()
+    {
+        var sb = new StringBuilder();
+        sb.Append("{\n");
+        sb.Append("  \"format\": \"acdream-trajectory\",\n");
+        sb.Append("  \"version\": ").Append(FormatVersion).Append(",\n");
+        sb.Append("  \"scene\": ").Append(Quote(SceneName)).Append(",\n");
+        sb.Append("  \"sceneSha256\": ").Append(Quote(SceneSha256)).Append(",\n");
+        sb.Append("  \"library\": ").Append(Quote(LibraryVersion)).Append(",\n");
+        sb.Append("  \"movers\": [");
+        for (int m = 0; m < Movers.Count; m++)
+        {
+            var mover = Movers[m];
+            sb.Append(m == 0 ? "\n" : ",\n");
+            sb.Append("    {\n      \"name\": ").Append(Quote(mover.Name)).Append(",\n      \"frames\": [");
+            for (int f = 0; f < mover.Frames.Count; f++)
+                sb.Append(f == 0 ? "\n        " : ",\n        ").Append(FrameJson(mover.Frames[f]));
+            sb.Append("\n      ]\n    }");
+        }
+        sb.Append("\n  ]\n}\n");
+        return sb.ToString();
+    }
+
+    private static readonly JsonSerializerOptions QuoteOptions = new() { Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
+
+    private static string Quote(string s) => JsonSerializer.Serialize(s, QuoteOptions);
+
+    private static string FrameJson(TrajectoryFrame f)
+    {
+        using var buffer = new MemoryStream();
+        using (var w = new Utf8JsonWriter(buffer))
+        {
+            w.WriteStartObject();
+            w.WriteStartObject("target");
+            w.WriteString("cell", Hex(f.Target.CellId));
+            WriteVec(w, "origin", f.Target.Frame.Origin);
+            var q = f.Target.Frame.Orientation;
+            w.WriteStartArray("rotation");
+            w.WriteNumberValue(q.W); w.WriteNumberValue(q.X); w.WriteNumberValue(q.Y); w.WriteNumberValue(q.Z);
+            w.WriteEndArray();
+            w.WriteEndObject();
+            WriteVec(w, "position", f.Position);
+            w.WriteString("cell", Hex(f.Cell));
+            w.WriteBoolean("contact", f.Contact);
+            w.WriteBoolean("onWalkable", f.OnWalkable);
+            w.WriteStartObject("contactPlane");
+            w.WriteBoolean("valid", f.ContactPlaneValid);
+            WriteVec(w, "normal", f.ContactPlane.Normal);
+            w.WriteNumber("d", f.ContactPlane.D);
+            w.WriteString("cell", Hex(f.ContactPlaneCell));
+            w.WriteEndObject();
+            WriteFlagged(w, "collisionNormal", f.CollisionNormalValid, f.CollisionNormal);
+            WriteFlagged(w, "slidingNormal", f.SlidingNormalValid, f.SlidingNormal);
+            w.WriteStartArray("collided");
+            foreach (uint id in f.CollidedObjects) w.WriteStringValue(Hex(id));
+            w.WriteEndArray();
+            w.WriteBoolean("succeeded", f.Succeeded);
+            w.WriteEndObject();
+        }
+        return Encoding.UTF8.GetString(buffer.ToArray());
+    }
+
+    private static string Hex(uint id) => $"0x{id:X8}";
+
+    private static void WriteVec(Utf8JsonWriter w, string name, Vector3 v)
+    {
+        // Utf8JsonWriter writes floats in their shortest round-trippable form.
+        w.WriteStartArray(name);
+        w.WriteNumberValue(v.X); w.WriteNumberValue(v.Y); w.WriteNumberValue(v.Z);
+        w.WriteEndArray();
+    }
+
+    private static void WriteFlagged(Utf8JsonWriter w, string name, bool valid, Vector3 v)
+    {
+        w.WriteStartObject(name);
+        w.WriteBoolean("valid", valid);
+        WriteVec(w, "vector", v);
+        w.WriteEndObject();
+    }
+
+    /// <summary>Reads a trajectory file from disk.</summary>
+    /// <exception cref="SceneFormatException">The file is malformed (the message starts with the JSON path).</exception>
+    public static Trajectory LoadFile(string path) => Parse(File.ReadAllText(path));
+
+    /// <summary>Reads a trajectory from its JSON text, strictly (unknown fields are errors).</summary>
+    /// <exception cref="SceneFormatException">The text is malformed (the message starts with the JSON path).</exception>
+    public static Trajectory Parse(string json)
+    {
+        ArgumentNullException.ThrowIfNull(json);
+        using var doc = JsonRead.Parse(json);
+        var o = new JsonObj(doc.RootElement, string.Empty);
+        if (o.String("format") != "acdream-trajectory")
+            throw new SceneFormatException("format", "expected \"acdream-trajectory\".");
+        int version = JsonRead.Int(o.Req("version"), "version");
+        if (version != FormatVersion)
+            throw new SceneFormatException("version", $"unsupported trajectory format version {version} (this library reads version {FormatVersion}).");
+        string scene = o.String("scene");
+        string sha = o.String("sceneSha256");
+        string library = o.String("library");
+        var movers = new List<MoverTrajectory>();
+        foreach (var (value, path) in o.Array("movers"))
+        {
+            var mo = new JsonObj(value, path);
+            string name = mo.String("name");
+            var frames = new List<TrajectoryFrame>();
+            foreach (var (fv, fp) in mo.Array("frames"))
+                frames.Add(ReadFrame(fv, fp));
+            mo.End();
+            movers.Add(new MoverTrajectory(name, frames));
+        }
+        o.End();
+        return new Trajectory(scene, sha, library, movers);
+    }
+
+    private static TrajectoryFrame ReadFrame(JsonElement e, string path)
+    {
+        var o = new JsonObj(e, path);
+        var t = o.Obj("target");
+        var target = new Position(t.Id("cell"), new Frame(t.Vec3("origin"), JsonRead.RawQuaternion(t.Req("rotation"), t.Child("rotation"))));
+        t.End();
+        var cp = o.Obj("contactPlane");
+        bool cpValid = JsonRead.Bool(cp.Req("valid"), cp.Child("valid"));
+        var plane = new Plane(cp.Vec3("normal"), cp.Float("d"));
+        uint cpCell = cp.Id("cell");
+        cp.End();
+        var (cnValid, cn) = ReadFlagged(o.Obj("collisionNormal"));
+        var (snValid, sn) = ReadFlagged(o.Obj("slidingNormal"));
+        var ids = new List<uint>();
+        foreach (var (value, p) in o.Array("collided"))
+            ids.Add(JsonRead.Id(value, p));
+        var frame = new TrajectoryFrame
+        {
+            Target = target,
+            Position = o.Vec3("position"),
+            Cell = o.Id("cell"),
+            Contact = JsonRead.Bool(o.Req("contact"), o.Child("contact")),
+            OnWalkable = JsonRead.Bool(o.Req("onWalkable"), o.Child("onWalkable")),
+            ContactPlaneValid = cpValid,
+            ContactPlane = plane,
+            ContactPlaneCell = cpCell,
+            CollisionNormalValid = cnValid,
+            CollisionNormal = cn,
+            SlidingNormalValid = snValid,
+            SlidingNormal = sn,
+            CollidedObjects = ids,
+            Succeeded = JsonRead.Bool(o.Req("succeeded"), o.Child("succeeded")),
+        };
+        o.End();
+        return frame;
+    }
+
+    private static (bool, Vector3) ReadFlagged(JsonObj o)
+    {
+        bool valid = JsonRead.Bool(o.Req("valid"), o.Child("valid"));
+        var v = o.Vec3("vector");
+        o.End();
+        return (valid, v);
+    }
+}

@@ -1,0 +1,183 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Numerics;
+
+namespace AcDream.Core.Physics;
+
+/// <summary>The first place where a replay disagrees with its recording.</summary>
+public sealed class ReplayDifference
+{
+    internal ReplayDifference(string mover, int frame, string field, string expected, string actual)
+    {
+        Mover = mover;
+        Frame = frame;
+        Field = field;
+        Expected = expected;
+        Actual = actual;
+    }
+
+    /// <summary>The mover's name; empty for a header difference.</summary>
+    public string Mover { get; }
+    /// <summary>The frame index (0-based); -1 when the difference is not in a frame (header, mover or frame counts).</summary>
+    public int Frame { get; }
+    /// <summary>The field, e.g. <c>position.y</c>, <c>cell</c>, <c>collided</c>.</summary>
+    public string Field { get; }
+    /// <summary>The recorded value.</summary>
+    public string Expected { get; }
+    /// <summary>The value the replay produced.</summary>
+    public string Actual { get; }
+
+    /// <inheritdoc />
+    public override string ToString()
+    {
+        string where = Frame >= 0 ? $"mover '{Mover}', frame {Frame}" : Mover.Length > 0 ? $"mover '{Mover}'" : "header";
+        return $"{where}, field {Field}: expected {Expected}, actual {Actual}";
+    }
+}
+
+/// <summary>The outcome of a replay.</summary>
+public sealed class ReplayResult
+{
+    internal ReplayResult(ReplayDifference? difference, int framesCompared, float tolerance, IReadOnlyList<string> notes)
+    {
+        FirstDifference = difference;
+        FramesCompared = framesCompared;
+        Tolerance = tolerance;
+        Notes = notes;
+    }
+
+    /// <summary>True when every frame matched.</summary>
+    public bool Matches => FirstDifference is null;
+    /// <summary>The first difference, or null.</summary>
+    public ReplayDifference? FirstDifference { get; }
+    /// <summary>How many frames were re-run and matched before the first difference (all of them on a match).</summary>
+    public int FramesCompared { get; }
+    /// <summary>The tolerance used for lengths.</summary>
+    public float Tolerance { get; }
+    /// <summary>Remarks that do not fail the replay (e.g. a different library version).</summary>
+    public IReadOnlyList<string> Notes { get; }
+}
+
+/// <summary>
+/// Re-runs a recorded trajectory: for every mover, from the scene's start state, each frame's recorded
+/// target is resolved again and the outputs are compared with the recording; the first difference is
+/// reported. Positions, planes and vectors compare within a tolerance (metres; default 1e-5); flags,
+/// cells and object ids compare exactly.
+/// </summary>
+public static class TrajectoryReplay
+{
+    /// <summary>The default tolerance for positions, plane distances and vector components.</summary>
+    public const float DefaultTolerance = 1e-5f;
+
+    /// <summary>Replays a trajectory against its scene.</summary>
+    /// <param name="scene">The scene the trajectory was recorded from (its SHA-256 must match the header's).</param>
+    /// <param name="trajectory">The recording.</param>
+    /// <param name="tolerance">The tolerance for lengths and vector components.</param>
+    /// <param name="diagnostics">When set, a <see cref="TransitionEventLog"/> is attached and this is called after every re-run frame with its events.</param>
+    public static ReplayResult Replay(Scene scene, Trajectory trajectory, float tolerance = DefaultTolerance, Action<FrameDiagnostics>? diagnostics = null)
+    {
+        ArgumentNullException.ThrowIfNull(scene);
+        ArgumentNullException.ThrowIfNull(trajectory);
+        if (!(tolerance >= 0f) || !float.IsFinite(tolerance))
+            throw new ArgumentException($"tolerance: must be a finite number of zero or more, got {tolerance}.", nameof(tolerance));
+        var notes = new List<string>();
+        if (trajectory.LibraryVersion != SceneRunner.LibraryVersion)
+            notes.Add($"recorded with library {trajectory.LibraryVersion}, replayed with {SceneRunner.LibraryVersion}");
+        if (!string.Equals(trajectory.SceneSha256, scene.Sha256, StringComparison.OrdinalIgnoreCase))
+            return Fail(new ReplayDifference("", -1, "sceneSha256", trajectory.SceneSha256, scene.Sha256), 0, tolerance, notes);
+        if (trajectory.Movers.Count != scene.Movers.Count)
+            return Fail(new ReplayDifference("", -1, "movers.count", Str(trajectory.Movers.Count), Str(scene.Movers.Count)), 0, tolerance, notes);
+
+        var engine = new PhysicsEngine(scene.World);
+        TransitionEventLog? log = diagnostics is null ? null : new TransitionEventLog();
+        engine.Observer = log;
+        int compared = 0;
+        for (int m = 0; m < scene.Movers.Count; m++)
+        {
+            var mover = scene.Movers[m];
+            var recorded = trajectory.Movers[m];
+            if (recorded.Name != mover.Name)
+                return Fail(new ReplayDifference(mover.Name, -1, "name", recorded.Name, mover.Name), compared, tolerance, notes);
+            if (recorded.Frames.Count != mover.FrameCount)
+                return Fail(new ReplayDifference(mover.Name, -1, "frames.count", Str(recorded.Frames.Count), Str(mover.FrameCount)), compared, tolerance, notes);
+            var state = mover.Start;
+            for (int f = 0; f < recorded.Frames.Count; f++)
+            {
+                var expected = recorded.Frames[f];
+                MoveResult result;
+                try
+                {
+                    result = engine.Resolve(mover.Description, state, expected.Target);
+                }
+                catch (ArgumentException ex)
+                {
+                    return Fail(new ReplayDifference(mover.Name, f, "target", "a valid target", ex.Message), compared, tolerance, notes);
+                }
+                var actual = TrajectoryFrame.From(expected.Target, result);
+                if (log is not null)
+                {
+                    diagnostics!(new FrameDiagnostics(m, mover.Name, f, log.Events));
+                    log.Clear();
+                }
+                var difference = Compare(mover.Name, f, expected, actual, tolerance);
+                if (difference is not null)
+                    return Fail(difference, compared, tolerance, notes);
+                compared++;
+                state = result.Next;
+            }
+        }
+        return new ReplayResult(null, compared, tolerance, notes);
+    }
+
+    private static ReplayResult Fail(ReplayDifference d, int compared, float tolerance, List<string> notes) => new(d, compared, tolerance, notes);
+
+    private static string Str(int v) => v.ToString(CultureInfo.InvariantCulture);
+    private static string Str(float v) => v.ToString("R", CultureInfo.InvariantCulture);
+    private static string Str(bool v) => v ? "true" : "false";
+    private static string Hex(uint v) => $"0x{v:X8}";
+
+    /// <summary>The first field of <paramref name="actual"/> that differs from <paramref name="expected"/>, in file order.</summary>
+    internal static ReplayDifference? Compare(string mover, int frame, TrajectoryFrame expected, TrajectoryFrame actual, float tolerance)
+    {
+        ReplayDifference? D(string field, string e, string a) => new(mover, frame, field, e, a);
+        ReplayDifference? Vec(string field, Vector3 e, Vector3 a)
+        {
+            if (Near(e.X, a.X)) { } else return D(field + ".x", Str(e.X), Str(a.X));
+            if (Near(e.Y, a.Y)) { } else return D(field + ".y", Str(e.Y), Str(a.Y));
+            if (Near(e.Z, a.Z)) { } else return D(field + ".z", Str(e.Z), Str(a.Z));
+            return null;
+        }
+        bool Near(float e, float a) => MathF.Abs(e - a) <= tolerance || e == a;
+
+        return Vec("position", expected.Position, actual.Position)
+            ?? (expected.Cell != actual.Cell ? D("cell", Hex(expected.Cell), Hex(actual.Cell)) : null)
+            ?? (expected.Contact != actual.Contact ? D("contact", Str(expected.Contact), Str(actual.Contact)) : null)
+            ?? (expected.OnWalkable != actual.OnWalkable ? D("onWalkable", Str(expected.OnWalkable), Str(actual.OnWalkable)) : null)
+            ?? (expected.ContactPlaneValid != actual.ContactPlaneValid ? D("contactPlane.valid", Str(expected.ContactPlaneValid), Str(actual.ContactPlaneValid)) : null)
+            ?? Vec("contactPlane.normal", expected.ContactPlane.Normal, actual.ContactPlane.Normal)
+            ?? (!Near(expected.ContactPlane.D, actual.ContactPlane.D) ? D("contactPlane.d", Str(expected.ContactPlane.D), Str(actual.ContactPlane.D)) : null)
+            ?? (expected.ContactPlaneCell != actual.ContactPlaneCell ? D("contactPlane.cell", Hex(expected.ContactPlaneCell), Hex(actual.ContactPlaneCell)) : null)
+            ?? (expected.CollisionNormalValid != actual.CollisionNormalValid ? D("collisionNormal.valid", Str(expected.CollisionNormalValid), Str(actual.CollisionNormalValid)) : null)
+            ?? Vec("collisionNormal.vector", expected.CollisionNormal, actual.CollisionNormal)
+            ?? (expected.SlidingNormalValid != actual.SlidingNormalValid ? D("slidingNormal.valid", Str(expected.SlidingNormalValid), Str(actual.SlidingNormalValid)) : null)
+            ?? Vec("slidingNormal.vector", expected.SlidingNormal, actual.SlidingNormal)
+            ?? (!SameIds(expected.CollidedObjects, actual.CollidedObjects) ? D("collided", Ids(expected.CollidedObjects), Ids(actual.CollidedObjects)) : null)
+            ?? (expected.Succeeded != actual.Succeeded ? D("succeeded", Str(expected.Succeeded), Str(actual.Succeeded)) : null);
+    }
+
+    private static bool SameIds(IReadOnlyList<uint> a, IReadOnlyList<uint> b)
+    {
+        if (a.Count != b.Count) return false;
+        for (int i = 0; i < a.Count; i++)
+            if (a[i] != b[i]) return false;
+        return true;
+    }
+
+    private static string Ids(IReadOnlyList<uint> ids)
+    {
+        var parts = new List<string>(ids.Count);
+        foreach (uint id in ids) parts.Add(Hex(id));
+        return "[" + string.Join(", ", parts) + "]";
+    }
+}

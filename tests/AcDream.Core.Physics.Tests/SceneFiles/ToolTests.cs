@@ -1,0 +1,123 @@
+using System.IO;
+using AcDream.Core.Physics;
+using ToolProgram = AcDream.Core.Physics.Tool.Program;
+
+namespace AcDream.Core.Physics.Tests.SceneFiles;
+
+/// <summary>The acdream-physics command-line tool: exit codes, outputs and error messages.</summary>
+public class ToolTests
+{
+    private static (int Code, string Out, string Err) Run(params string[] args)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int code = ToolProgram.Run(args, stdout, stderr);
+        return (code, stdout.ToString(), stderr.ToString());
+    }
+
+    private static string Temp(string name) => Path.Combine(Path.GetTempPath(), $"acdream-{Guid.NewGuid():N}-{name}");
+
+    [Fact]
+    public void List_PrintsTheBuiltInScenes()
+    {
+        var (code, output, _) = Run("list");
+        Assert.Equal(0, code);
+        foreach (string name in SceneLibrary.Names)
+            Assert.Contains(name, output);
+    }
+
+    [Fact]
+    public void Run_PrintsATableAndASummary()
+    {
+        var (code, output, err) = Run("run", "boulder");
+        Assert.Equal(0, code);
+        Assert.Equal("", err);
+        var lines = output.TrimEnd().Split('\n');
+        Assert.StartsWith("mover", lines[0]);
+        Assert.StartsWith("boulder: 4 movers, 160 frames", lines[^1]);
+        Assert.Equal(1 + 160 + 1, lines.Length);
+    }
+
+    [Fact]
+    public void Record_ThenReplay_Matches_AndAnEditedFileFails()
+    {
+        string traj = Temp("door.json");
+        try
+        {
+            Assert.Equal(0, Run("record", "door", "--out", traj).Code);
+            var (code, output, _) = Run("replay", "door", traj);
+            Assert.Equal(0, code);
+            Assert.Contains("replay matches", output);
+
+            File.WriteAllText(traj, File.ReadAllText(traj).Replace("\"position\":[100,98.1,", "\"position\":[100,98.2,"));
+            (code, output, _) = Run("replay", "door", traj);
+            Assert.Equal(1, code);
+            Assert.Contains("mover 'front-centre', frame 0, field position.y: expected 98.2, actual 98.1", output);
+        }
+        finally
+        {
+            File.Delete(traj);
+        }
+    }
+
+    [Fact]
+    public void SceneFromAFile_Works()
+    {
+        string scene = Temp("trunk.json");
+        try
+        {
+            File.WriteAllText(scene, SceneLibrary.ReadText("trunk"));
+            Assert.Equal(0, Run("run", scene).Code);
+        }
+        finally
+        {
+            File.Delete(scene);
+        }
+    }
+
+    [Fact]
+    public void Diag_PrintsTheEvents()
+    {
+        var (code, output, _) = Run("run", "door", "--diag");
+        Assert.Equal(0, code);
+        Assert.Contains("skipped 0x70000001 Cylinder[0]: BspOnlyDispatch", output);
+    }
+
+    [Theory]
+    [InlineData("")]
+    [InlineData("frobnicate")]
+    [InlineData("run")]
+    [InlineData("run no-such-scene")]
+    [InlineData("record door")]
+    [InlineData("replay door")]
+    [InlineData("run door --bogus")]
+    [InlineData("run door extra")]
+    [InlineData("replay door /no/such/file.json")]
+    [InlineData("replay door --tolerance -1 x.json")]
+    public void UsageErrors_ExitTwo_WithAMessageAndNoStackTrace(string commandLine)
+    {
+        var (code, _, err) = Run(commandLine.Split(' ', StringSplitOptions.RemoveEmptyEntries));
+        Assert.Equal(2, code);
+        Assert.False(string.IsNullOrWhiteSpace(err));
+        Assert.DoesNotContain("   at ", err);
+    }
+
+    [Fact]
+    public void ABadSceneFile_ExitsTwo_WithOneLineNamingTheFileAndThePath()
+    {
+        string scene = Temp("bad.json");
+        try
+        {
+            File.WriteAllText(scene, SceneLibrary.ReadText("trunk").Replace("\"radius\": 0.6,", "\"radius\": -0.6,"));
+            var (code, output, err) = Run("run", scene);
+            Assert.Equal(2, code);
+            Assert.Equal("", output);
+            Assert.Single(err.TrimEnd().Split('\n'));
+            Assert.Contains($"{scene}: setups.trunk.cylSpheres[0].radius: must be", err);
+        }
+        finally
+        {
+            File.Delete(scene);
+        }
+    }
+}
