@@ -192,7 +192,7 @@ public static class DoorJob
                 var bench = report.BenchmarkCase;
                 if (bench.Descriptor.Type != typeof(DoorTransitionBenchmarks) || report.ResultStatistics is null)
                     continue;
-                if (bench.Parameters["Method"] is not DoorMethod method)
+                if (bench.Parameters["Resolver"] is not DoorMethod method)
                     continue;
                 var r = results.FirstOrDefault(x => x.Method == method);
                 if (r is null)

@@ -101,7 +101,7 @@ public sealed class DoorStepper
     /// <summary>The method.</summary>
     public DoorMethod Method { get; }
 
-    /// <summary>Resolves one frame from <paramref name="state"/> towards <paramref name="target"/> (landblock space).</summary>
+    /// <summary>Resolves one frame from <paramref name="state"/> towards <paramref name="target"/> (landblock space); an engine exception is reported as <see cref="DoorStep.Failed"/>.</summary>
     public DoorStep Step(in MoverState state, Vector3 target)
     {
         if (_reference is not null)
@@ -116,7 +116,7 @@ public sealed class DoorStepper
             var result = _engine!.Resolve(DoorScene.Player, state, goal);
             return new DoorStep(result.Next, result.CollisionNormalValid, result.CollisionNormal, false);
         }
-        catch (ArgumentException)
+        catch (Exception ex) when (ex is ArgumentException or InvalidOperationException or ArithmeticException or IndexOutOfRangeException)
         {
             return new DoorStep(state, false, default, true);
         }

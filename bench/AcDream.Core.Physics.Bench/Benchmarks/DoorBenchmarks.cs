@@ -15,12 +15,12 @@ public class DoorTransitionBenchmarks
     private Vector3 _target;
 
     [ParamsAllValues]
-    public DoorMethod Method { get; set; }
+    public DoorMethod Resolver { get; set; }
 
     [GlobalSetup]
     public void Setup()
     {
-        _stepper = new DoorStepper(DoorScene.Create(), Method);
+        _stepper = new DoorStepper(DoorScene.Create(), Resolver);
         _state = DoorWorkloads.TransitionStart;
         _target = DoorWorkloads.TransitionTarget;
     }
@@ -36,10 +36,10 @@ public class DoorApproachBenchmarks
     private DoorStepper _stepper = null!;
 
     [ParamsAllValues]
-    public DoorMethod Method { get; set; }
+    public DoorMethod Resolver { get; set; }
 
     [GlobalSetup]
-    public void Setup() => _stepper = new DoorStepper(DoorScene.Create(), Method);
+    public void Setup() => _stepper = new DoorStepper(DoorScene.Create(), Resolver);
 
     [Benchmark(OperationsPerInvoke = DoorWorkloads.ApproachFrames)]
     public MoverState Approach30() => DoorWorkloads.Approach(_stepper);
@@ -83,11 +83,11 @@ public class DoorBatchBenchmarks
     public static IEnumerable<DoorMethod> Methods => [DoorMethod.Retail, DoorMethod.Reference];
 
     [ParamsSource(nameof(Methods))]
-    public DoorMethod Method { get; set; }
+    public DoorMethod Resolver { get; set; }
 
     [GlobalSetup]
     public void Setup() => _scene = DoorScene.Create();
 
     [Benchmark(OperationsPerInvoke = DoorWorkloads.BatchTransitions)]
-    public void AllCores() => DoorWorkloads.Batch(_scene, Method, Environment.ProcessorCount);
+    public void AllCores() => DoorWorkloads.Batch(_scene, Resolver, Environment.ProcessorCount);
 }

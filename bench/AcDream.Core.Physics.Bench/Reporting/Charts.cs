@@ -20,38 +20,46 @@ public static class Charts
         multiplot.Layout = new ScottPlot.MultiplotLayouts.Columns();
         var error = multiplot.GetPlot(0);
         var penetration = multiplot.GetPlot(1);
-        foreach (var r in results)
+        for (int i = 0; i < results.Count; i++)
         {
+            var r = results[i];
             double x = Math.Log10(Math.Max(1, r.Timing.MixNs));
             var color = MethodColor(r.Method);
             var p99 = error.Add.Marker(x, r.Accuracy.FrameError.P99 * 1000, MarkerShape.FilledCircle, 10, color);
             error.Add.Marker(x, r.Accuracy.FrameError.Mean * 1000, MarkerShape.OpenCircle, 10, color);
-            Label(error, DoorMethods.Label(r.Method), x, r.Accuracy.FrameError.P99 * 1000, color);
+            Label(error, DoorMethods.Label(r.Method), x, r.Accuracy.FrameError.P99 * 1000, color, i);
             penetration.Add.Marker(x, r.Accuracy.MaxPenetration * 1000, MarkerShape.FilledSquare, 10, color);
-            Label(penetration, DoorMethods.Label(r.Method), x, r.Accuracy.MaxPenetration * 1000, color);
+            Label(penetration, DoorMethods.Label(r.Method), x, r.Accuracy.MaxPenetration * 1000, color, i);
         }
         error.Title("Position error per frame vs reference (filled: p99, open: mean)");
         error.YLabel("position error (mm)");
         penetration.Title("Deepest penetration of the slab after a frame");
         penetration.YLabel("penetration (mm)");
-        var eps = penetration.Add.HorizontalLine(PhysicsConstants.Epsilon * 1000, 1, Colors.Gray, LinePattern.Dashed);
-        eps.LabelText = "EPSILON";
+        penetration.Add.HorizontalLine(PhysicsConstants.Epsilon * 1000, 1, Colors.Gray, LinePattern.Dashed);
+        var epsLabel = penetration.Add.Text("EPSILON (0.2 mm)", Math.Log10(Math.Max(1, results.Min(r => r.Timing.MixNs))), PhysicsConstants.Epsilon * 1000);
+        epsLabel.LabelFontColor = Colors.Gray;
+        epsLabel.LabelFontSize = 12;
+        epsLabel.OffsetY = -4;
+        epsLabel.LabelAlignment = Alignment.LowerLeft;
         foreach (var plot in new[] { error, penetration })
         {
             plot.XLabel("ns per transition (log scale, approach mix)");
             LogTicks(plot, results.Select(r => r.Timing.MixNs));
-            plot.Axes.Margins(0.15, 0.15);
+            plot.Axes.AutoScale();
+            var logs = results.Select(r => Math.Log10(Math.Max(1, r.Timing.MixNs))).ToArray();
+            plot.Axes.SetLimitsX(logs.Min() - 0.08, logs.Max() + 0.22);
         }
         multiplot.SavePng(path, 1600, 650);
     }
 
-    private static void Label(Plot plot, string text, double x, double y, Color color)
+    /// <summary>A method's label beside its point, staggered up and down so that neighbours stay readable.</summary>
+    private static void Label(Plot plot, string text, double x, double y, Color color, int index)
     {
         var label = plot.Add.Text(text, x, y);
         label.LabelFontColor = color;
         label.LabelFontSize = 13;
         label.OffsetX = 8;
-        label.OffsetY = -8;
+        label.OffsetY = index % 2 == 0 ? -18 : 4;
     }
 
     private static void LogTicks(Plot plot, IEnumerable<double> values)
