@@ -8,6 +8,7 @@ using AcDream.Core.Physics.Bench.Accuracy;
 using AcDream.Core.Physics.Bench.Benchmarks;
 using AcDream.Core.Physics.Bench.Reporting;
 using BenchmarkDotNet.Configs;
+using BenchmarkDotNet.Jobs;
 using BenchmarkDotNet.Reports;
 using BenchmarkDotNet.Running;
 
@@ -20,11 +21,15 @@ namespace AcDream.Core.Physics.Bench;
 /// </summary>
 public static class DoorJob
 {
-    /// <summary>Runs the job. Options: <c>--out DIR</c> (default out/door), <c>--full</c>.</summary>
+    /// <summary>
+    /// Runs the job. Options: <c>--out DIR</c> (default out/door); <c>--full</c> (BenchmarkDotNet's default
+    /// job over every benchmark class, its door-transition means replacing the Stopwatch ones);
+    /// <c>--full-short</c> (the same with BenchmarkDotNet's short job, a few minutes).
+    /// </summary>
     public static int Run(string[] args)
     {
         string outDir = Path.Combine("out", "door");
-        bool full = false;
+        bool full = false, shortJob = false;
         for (int i = 0; i < args.Length; i++)
         {
             switch (args[i])
@@ -35,8 +40,11 @@ public static class DoorJob
                 case "--full":
                     full = true;
                     break;
+                case "--full-short":
+                    full = shortJob = true;
+                    break;
                 default:
-                    Console.Error.WriteLine($"door: unknown option '{args[i]}'. Usage: door [--out DIR] [--full]");
+                    Console.Error.WriteLine($"door: unknown option '{args[i]}'. Usage: door [--out DIR] [--full | --full-short]");
                     return 2;
             }
         }
@@ -79,8 +87,11 @@ public static class DoorJob
 
         if (full)
         {
-            Progress("--full: running BenchmarkDotNet (default job) over every benchmark class; this takes a while");
-            var summaries = BenchmarkRunner.Run(typeof(DoorJob).Assembly, DefaultConfig.Instance.WithOptions(ConfigOptions.JoinSummary));
+            Progress($"running BenchmarkDotNet ({(shortJob ? "short" : "default")} job) over every benchmark class; this takes a while");
+            IConfig config = DefaultConfig.Instance;
+            if (shortJob)
+                config = config.AddJob(Job.ShortRun);
+            var summaries = BenchmarkRunner.Run(typeof(DoorJob).Assembly, config);
             ApplyBenchmarkDotNet(summaries, results);
         }
 
