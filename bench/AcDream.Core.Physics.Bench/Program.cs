@@ -1,10 +1,20 @@
+using System;
+using System.Linq;
 using BenchmarkDotNet.Running;
 
 namespace AcDream.Core.Physics.Bench;
 
-/// <summary>Entry point: runs the benchmarks selected on the command line.</summary>
+/// <summary>Entry point: <c>door</c> runs the door job; anything else goes to BenchmarkDotNet's switcher.</summary>
 public static class Program
 {
-    /// <summary>Runs BenchmarkDotNet's switcher over this assembly.</summary>
-    public static void Main(string[] args) => BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+    /// <summary>Runs the door job or the benchmarks selected on the command line.</summary>
+    public static int Main(string[] args)
+    {
+        if (args.Length > 0 && args[0] == "door")
+            return DoorJob.Run(args.Skip(1).ToArray());
+        if (args.Length > 0 && args[0] == "trace")
+            return DoorTrace.Run(args.Skip(1).ToArray());
+        BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+        return 0;
+    }
 }

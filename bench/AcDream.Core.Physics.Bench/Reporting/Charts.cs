@@ -1,0 +1,173 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using AcDream.Core.Physics.Bench.Accuracy;
+using ScottPlot;
+
+namespace AcDream.Core.Physics.Bench.Reporting;
+
+/// <summary>PNG charts of the door job (ScottPlot).</summary>
+public static class Charts
+{
+    /// <summary>
+    /// Speed (ns per transition, log scale) against accuracy: one panel for the position error (mean and
+    /// p99 per frame against the reference), one for the deepest penetration; one labelled point per method.
+    /// </summary>
+    public static void SpeedVsAccuracy(IReadOnlyList<MethodResult> results, string path)
+    {
+        var multiplot = new Multiplot();
+        multiplot.AddPlots(2);
+        multiplot.Layout = new ScottPlot.MultiplotLayouts.Columns();
+        var error = multiplot.GetPlot(0);
+        var penetration = multiplot.GetPlot(1);
+        for (int i = 0; i < results.Count; i++)
+        {
+            var r = results[i];
+            double x = Math.Log10(Math.Max(1, r.Timing.MixNs));
+            var color = MethodColor(r.Method);
+            var p99 = error.Add.Marker(x, r.Accuracy.FrameError.P99 * 1000, MarkerShape.FilledCircle, 10, color);
+            error.Add.Marker(x, r.Accuracy.FrameError.Mean * 1000, MarkerShape.OpenCircle, 10, color);
+            Label(error, DoorMethods.Label(r.Method), x, r.Accuracy.FrameError.P99 * 1000, color, i);
+            penetration.Add.Marker(x, r.Accuracy.MaxPenetration * 1000, MarkerShape.FilledSquare, 10, color);
+            Label(penetration, DoorMethods.Label(r.Method), x, r.Accuracy.MaxPenetration * 1000, color, i);
+        }
+        error.Title("Position error per frame vs reference (filled: p99, open: mean)");
+        error.YLabel("position error (mm)");
+        penetration.Title("Deepest penetration of the slab after a frame");
+        penetration.YLabel("penetration (mm)");
+        penetration.Add.HorizontalLine(PhysicsConstants.Epsilon * 1000, 1, Colors.Gray, LinePattern.Dashed);
+        var epsLabel = penetration.Add.Text("EPSILON (0.2 mm)", Math.Log10(Math.Max(1, results.Min(r => r.Timing.MixNs))), PhysicsConstants.Epsilon * 1000);
+        epsLabel.LabelFontColor = Colors.Gray;
+        epsLabel.LabelFontSize = 12;
+        epsLabel.OffsetY = -4;
+        epsLabel.LabelAlignment = Alignment.LowerLeft;
+        foreach (var plot in new[] { error, penetration })
+        {
+            plot.XLabel("ns per transition (log scale, approach mix)");
+            LogTicks(plot, results.Select(r => r.Timing.MixNs));
+            plot.Axes.AutoScale();
+            var logs = results.Select(r => Math.Log10(Math.Max(1, r.Timing.MixNs))).ToArray();
+            plot.Axes.SetLimitsX(logs.Min() - 0.08, logs.Max() + 0.22);
+        }
+        multiplot.SavePng(path, 1600, 650);
+    }
+
+    /// <summary>A method's label beside its point, staggered up and down so that neighbours stay readable.</summary>
+    private static void Label(Plot plot, string text, double x, double y, Color color, int index)
+    {
+        var label = plot.Add.Text(text, x, y);
+        label.LabelFontColor = color;
+        label.LabelFontSize = 13;
+        label.OffsetX = 8;
+        label.OffsetY = index % 2 == 0 ? -18 : 4;
+    }
+
+    private static void LogTicks(Plot plot, IEnumerable<double> values)
+    {
+        var logs = values.Where(v => v > 0).Select(Math.Log10).ToArray();
+        int lo = (int)Math.Floor(logs.Min()), hi = (int)Math.Ceiling(logs.Max());
+        var positions = new List<double>();
+        var labels = new List<string>();
+        for (int d = lo; d <= hi; d++)
+            foreach (int m in new[] { 1, 2, 5 })
+            {
+                double v = m * Math.Pow(10, d);
+                if (Math.Log10(v) > hi + 1e-9)
+                    continue;
+                positions.Add(Math.Log10(v));
+                labels.Add(v >= 1000 ? $"{v / 1000:0.#} µs" : $"{v:0} ns");
+            }
+        plot.Axes.Bottom.SetTicks(positions.ToArray(), labels.ToArray());
+    }
+
+    /// <summary>A fixed colour per method.</summary>
+    public static Color MethodColor(DoorMethod method) => method switch
+    {
+        DoorMethod.Retail => Colors.Blue,
+        DoorMethod.Scale0_25 => Colors.Teal,
+        DoorMethod.Scale0_5 => Colors.Green,
+        DoorMethod.Scale2 => Colors.Orange,
+        DoorMethod.Scale4 => Colors.Red,
+        DoorMethod.Reference => Colors.Black,
+        _ => Colors.Gray,
+    };
+
+    /// <summary>The colour of a failure in the stability map.</summary>
+    public static Color FailureColor(DoorFailure failure) => failure switch
+    {
+        DoorFailure.Jitter => Colors.Gold,
+        DoorFailure.Stuck => Colors.DarkOrange,
+        DoorFailure.Penetration => Colors.Red,
+        DoorFailure.Tunnel => Colors.Purple,
+        DoorFailure.NaN => Colors.Black,
+        _ => Colors.WhiteSmoke,
+    };
+
+    /// <summary>
+    /// The stability map: one block per method (columns: headings −85°..85°), rows grouped by frame rate
+    /// and speed, one row per lateral offset; each cell coloured by the approach's most severe failure.
+    /// </summary>
+    public static void StabilityMap(IReadOnlyList<MethodResult> results, string path)
+    {
+        var plot = new Plot();
+        int headings = DoorApproaches.Headings.Length, laterals = DoorApproaches.Laterals.Length;
+        const int gapX = 4, gapY = 2;
+        var yTicks = new List<double>();
+        var yLabels = new List<string>();
+        int rowBlocks = 0;
+        foreach (int hz in DoorApproaches.Rates)
+            foreach (float speed in DoorApproaches.Speeds)
+            {
+                double top = -rowBlocks * (laterals + gapY);
+                yTicks.Add(top - laterals / 2.0);
+                yLabels.Add($"{hz} Hz {speed:0} m/s");
+                rowBlocks++;
+            }
+        for (int m = 0; m < results.Count; m++)
+        {
+            double left = m * (headings + gapX);
+            double top = 0, bottom = -rowBlocks * (laterals + gapY) + gapY;
+            var bg = plot.Add.Rectangle(left, left + headings, bottom, top);
+            bg.FillStyle.Color = FailureColor(DoorFailure.None);
+            bg.LineStyle.Width = 0;
+            var name = plot.Add.Text(DoorMethods.Label(results[m].Method), left + headings / 2.0, top + 1.5);
+            name.LabelFontSize = 16;
+            name.LabelAlignment = Alignment.LowerCenter;
+            foreach (var o in results[m].Outcomes)
+            {
+                var worst = AccuracySummary.Worst(o.Failures);
+                if (worst == DoorFailure.None)
+                    continue;
+                var a = o.Approach;
+                int col = Array.IndexOf(DoorApproaches.Headings, a.Heading);
+                int block = Array.IndexOf(DoorApproaches.Rates, a.Hz) * DoorApproaches.Speeds.Length + Array.IndexOf(DoorApproaches.Speeds, a.Speed);
+                int row = Array.IndexOf(DoorApproaches.Laterals, a.Lateral);
+                if (col < 0 || block < 0 || row < 0)
+                    continue;
+                double y = -block * (laterals + gapY) - row;
+                var cell = plot.Add.Rectangle(left + col, left + col + 1, y - 1, y);
+                cell.FillStyle.Color = FailureColor(worst);
+                cell.LineStyle.Width = 0;
+            }
+        }
+        plot.Axes.Left.SetTicks(yTicks.ToArray(), yLabels.ToArray());
+        var xTicks = new List<double>();
+        var xLabels = new List<string>();
+        for (int m = 0; m < results.Count; m++)
+            foreach (int h in new[] { -85, 0, 85 })
+            {
+                xTicks.Add(m * (headings + gapX) + Array.IndexOf(DoorApproaches.Headings, h) + 0.5);
+                xLabels.Add($"{h}°");
+            }
+        plot.Axes.Bottom.SetTicks(xTicks.ToArray(), xLabels.ToArray());
+        plot.Title("Stability map: most severe failure per approach (columns: heading; rows: lateral offset −0.7..0.7 m, top to bottom)");
+        plot.XLabel("heading from straight at the face");
+        foreach (var kind in new[] { DoorFailure.None, DoorFailure.Jitter, DoorFailure.Stuck, DoorFailure.Penetration, DoorFailure.Tunnel, DoorFailure.NaN })
+            plot.Legend.ManualItems.Add(new LegendItem { LabelText = kind == DoorFailure.None ? "ok" : kind.ToString(), FillColor = FailureColor(kind) });
+        plot.Legend.Alignment = Alignment.LowerRight;
+        plot.ShowLegend(Edge.Bottom);
+        plot.Grid.IsVisible = false;
+        plot.Axes.Margins(0.01, 0.03);
+        plot.SavePng(path, 2200, 1400);
+    }
+}

@@ -1,0 +1,179 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text;
+using AcDream.Core.Physics.Bench.Accuracy;
+
+namespace AcDream.Core.Physics.Bench.Reporting;
+
+/// <summary>Speed of one method (nanoseconds per transition unless named otherwise).</summary>
+public sealed class MethodTiming
+{
+    /// <summary>One door transition (0.1 m into the face).</summary>
+    public double TransitionNs { get; set; }
+    /// <summary>The 30-frame head-on approach, per frame.</summary>
+    public double ApproachNs { get; set; }
+    /// <summary>The 30-frame sliding NE approach, per frame.</summary>
+    public double SlideNs { get; set; }
+    /// <summary>The accuracy approach set replayed (every frame's input), per frame.</summary>
+    public double MixNs { get; set; }
+    /// <summary>Independent movers on all cores: transitions per second.</summary>
+    public double BatchPerSecond { get; set; }
+    /// <summary>Bytes allocated per door transition (steady state).</summary>
+    public double BytesPerTransition { get; set; }
+    /// <summary>Where the door transition number came from ("Stopwatch" or "BenchmarkDotNet").</summary>
+    public string Source { get; set; } = "Stopwatch";
+}
+
+/// <summary>Everything measured for one method.</summary>
+public sealed class MethodResult
+{
+    /// <summary>The method.</summary>
+    public required DoorMethod Method { get; init; }
+    /// <summary>Accuracy.</summary>
+    public required AccuracySummary Accuracy { get; init; }
+    /// <summary>Per-approach outcomes.</summary>
+    public required ApproachOutcome[] Outcomes { get; init; }
+    /// <summary>Speed.</summary>
+    public MethodTiming Timing { get; } = new();
+}
+
+/// <summary>Markdown and CSV output of the door job.</summary>
+public static class Reports
+{
+    private static readonly CultureInfo Inv = CultureInfo.InvariantCulture;
+
+    /// <summary>The machine the job ran on (cores, CPU, .NET, date).</summary>
+    public static string Machine()
+    {
+        string cpu = "unknown";
+        try
+        {
+            if (File.Exists("/proc/cpuinfo"))
+                cpu = File.ReadLines("/proc/cpuinfo").FirstOrDefault(l => l.StartsWith("model name", StringComparison.Ordinal))?.Split(':', 2)[1].Trim() ?? cpu;
+        }
+        catch (IOException)
+        {
+        }
+        return $"{Environment.ProcessorCount} logical cores (nproc), CPU: {cpu}, {RuntimeInformation.FrameworkDescription} on {RuntimeInformation.OSDescription} ({RuntimeInformation.ProcessArchitecture}), {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC";
+    }
+
+    private static string Mm(double metres) => (metres * 1000).ToString("0.###", Inv);
+    private static string Ns(double ns) => ns.ToString(ns >= 100 ? "0" : "0.0", Inv);
+
+    /// <summary>The speed/accuracy table.</summary>
+    public static string SpeedAccuracyTable(IReadOnlyList<MethodResult> results)
+    {
+        var sb = new StringBuilder();
+        sb.AppendLine("| Method | door transition (ns) | alloc (B) | 30-frame approach (ns/frame) | NE slide (ns/frame) | approach mix (ns/frame) | all cores (transitions/s) | frame error mean / p99 / max (mm) | approach error mean / p99 / max (mm) | max penetration (mm) | penetrating frames | tunnelling frames | stuck frames | jitter frames | NaN frames | slide error (mm) | slide ratio |");
+        sb.AppendLine("|---|---:|---:|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+        foreach (var r in results)
+        {
+            var a = r.Accuracy;
+            var t = r.Timing;
+            sb.AppendLine(string.Join(" | ", new[]
+            {
+                "| " + DoorMethods.Label(r.Method), Ns(t.TransitionNs), t.BytesPerTransition.ToString("0", Inv), Ns(t.ApproachNs), Ns(t.SlideNs), Ns(t.MixNs),
+                t.BatchPerSecond.ToString("N0", Inv),
+                $"{Mm(a.FrameError.Mean)} / {Mm(a.FrameError.P99)} / {Mm(a.FrameError.Max)}",
+                $"{Mm(a.ApproachError.Mean)} / {Mm(a.ApproachError.P99)} / {Mm(a.ApproachError.Max)}",
+                Mm(a.MaxPenetration), a.PenetrationFrames.ToString(Inv), a.TunnelFrames.ToString(Inv), a.StuckFrames.ToString(Inv),
+                a.JitterFrames.ToString(Inv), a.NaNFrames.ToString(Inv), Mm(a.SlideError), a.SlideRatio.ToString("0.000", Inv),
+            }) + " |");
+        }
+        return sb.ToString();
+    }
+
+    /// <summary>The speed/accuracy CSV (one row per method, SI units: ns and metres).</summary>
+    public static string SpeedAccuracyCsv(IReadOnlyList<MethodResult> results)
+    {
+        var sb = new StringBuilder();
+        sb.AppendLine("method,transition_ns,alloc_bytes,approach_ns_per_frame,slide_ns_per_frame,mix_ns_per_frame,batch_transitions_per_s,approaches,frames,frame_error_mean_m,frame_error_p99_m,frame_error_max_m,approach_error_mean_m,approach_error_p99_m,approach_error_max_m,max_penetration_m,penetration_frames,tunnel_frames,stuck_frames,jitter_frames,nan_frames,slide_approaches,slide_error_m,slide_ratio,timing_source");
+        foreach (var r in results)
+        {
+            var a = r.Accuracy;
+            var t = r.Timing;
+            sb.AppendLine(string.Join(",", new object[]
+            {
+                r.Method, t.TransitionNs, t.BytesPerTransition, t.ApproachNs, t.SlideNs, t.MixNs, t.BatchPerSecond, a.Approaches, a.Frames,
+                a.FrameError.Mean, a.FrameError.P99, a.FrameError.Max, a.ApproachError.Mean, a.ApproachError.P99, a.ApproachError.Max,
+                a.MaxPenetration, a.PenetrationFrames, a.TunnelFrames, a.StuckFrames, a.JitterFrames, a.NaNFrames, a.SlideApproaches,
+                a.SlideError, a.SlideRatio, t.Source,
+            }.Select(v => Convert.ToString(v, Inv))));
+        }
+        return sb.ToString();
+    }
+
+    /// <summary>The scale table (retail door transition with other objects in the landblock).</summary>
+    public static string ScaleTable(IReadOnlyList<(int Objects, double Ns)> scale)
+    {
+        var sb = new StringBuilder();
+        sb.AppendLine("| Other objects in the landblock | door transition (ns) |");
+        sb.AppendLine("|---:|---:|");
+        foreach (var (objects, ns) in scale)
+            sb.AppendLine($"| {objects:N0} | {Ns(ns)} |");
+        return sb.ToString();
+    }
+
+    /// <summary>Failed approaches per method, frame rate and speed.</summary>
+    public static string StabilityTables(IReadOnlyList<MethodResult> results)
+    {
+        var sb = new StringBuilder();
+        sb.AppendLine("Approaches (of " + results[0].Outcomes.Length + " per method) with each failure:");
+        sb.AppendLine();
+        sb.AppendLine("| Method | penetration | tunnel | stuck | jitter | NaN | any |");
+        sb.AppendLine("|---|---:|---:|---:|---:|---:|---:|");
+        foreach (var r in results)
+        {
+            var f = r.Accuracy.FailedApproaches;
+            sb.AppendLine($"| {DoorMethods.Label(r.Method)} | {f[DoorFailure.Penetration]} | {f[DoorFailure.Tunnel]} | {f[DoorFailure.Stuck]} | {f[DoorFailure.Jitter]} | {f[DoorFailure.NaN]} | {r.Outcomes.Count(o => o.Failures != DoorFailure.None)} |");
+        }
+        sb.AppendLine();
+        foreach (var r in results)
+        {
+            sb.AppendLine($"### {DoorMethods.Label(r.Method)}");
+            sb.AppendLine();
+            sb.AppendLine("Failed approaches per frame rate and speed, as penetration / tunnel / stuck / jitter / NaN (of " +
+                DoorApproaches.Headings.Length * DoorApproaches.Laterals.Length + " approaches per row):");
+            sb.AppendLine();
+            sb.AppendLine("| Rate | " + string.Join(" | ", DoorApproaches.Speeds.Select(s => $"{s:0} m/s")) + " |");
+            sb.AppendLine("|---|" + string.Concat(DoorApproaches.Speeds.Select(_ => "---|")));
+            foreach (int hz in DoorApproaches.Rates)
+            {
+                sb.Append($"| {hz} Hz |");
+                foreach (float speed in DoorApproaches.Speeds)
+                {
+                    var cell = r.Outcomes.Where(o => o.Approach.Hz == hz && o.Approach.Speed == speed).ToArray();
+                    int Count(DoorFailure k) => cell.Count(o => (o.Failures & k) != 0);
+                    sb.Append(cell.All(o => o.Failures == DoorFailure.None)
+                        ? " – |"
+                        : $" {Count(DoorFailure.Penetration)} / {Count(DoorFailure.Tunnel)} / {Count(DoorFailure.Stuck)} / {Count(DoorFailure.Jitter)} / {Count(DoorFailure.NaN)} |");
+                }
+                sb.AppendLine();
+            }
+            sb.AppendLine();
+        }
+        return sb.ToString();
+    }
+
+    /// <summary>One row per method and approach: the failures and the numbers behind them.</summary>
+    public static string StabilityCsv(IReadOnlyList<MethodResult> results)
+    {
+        var sb = new StringBuilder();
+        sb.AppendLine("method,hz,speed_mps,lateral_m,heading_deg,frames,failures,max_penetration_m,penetration_frames,tunnel_frames,stuck_frames,jitter_frames,nan_frames,final_error_m");
+        foreach (var r in results)
+            foreach (var o in r.Outcomes)
+            {
+                var a = o.Approach;
+                sb.AppendLine(string.Join(",", new object[]
+                {
+                    r.Method, a.Hz, a.Speed, a.Lateral, a.Heading, o.Frames, o.Failures.ToString().Replace(", ", "|", StringComparison.Ordinal),
+                    o.MaxPenetration, o.PenetrationFrames, o.TunnelFrames, o.StuckFrames, o.JitterFrames, o.NaNFrames, o.FinalError,
+                }.Select(v => Convert.ToString(v, Inv))));
+            }
+        return sb.ToString();
+    }
+}
