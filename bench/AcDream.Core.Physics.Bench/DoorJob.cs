@@ -74,16 +74,19 @@ public static class DoorJob
             Progress($"speed    {DoorMethods.Label(r.Method),-10}: transition {r.Timing.TransitionNs:0} ns ({r.Timing.BytesPerTransition:0} B), approach {r.Timing.ApproachNs:0} ns/frame, slide {r.Timing.SlideNs:0} ns/frame, mix {r.Timing.MixNs:0} ns/frame, all cores {r.Timing.BatchPerSecond:N0} transitions/s");
         }
 
-        var scale = new List<(int, double)>();
-        foreach (int objects in new[] { 0, 10, 1_000, 10_000 })
-        {
-            var stepper = new DoorStepper(DoorScene.Create(objects), DoorMethod.Retail);
-            var start = DoorWorkloads.TransitionStart;
-            var target = DoorWorkloads.TransitionTarget;
-            double ns = Measure(n => { for (int i = 0; i < n; i++) stepper.Resolve(start, target); }, 1, 0.3);
-            scale.Add((objects, ns));
-            Progress($"scale    {objects,6} other objects: transition {ns:0} ns");
-        }
+        var scale = new List<(int, bool, double)>();
+        foreach (bool nearShare in new[] { true, false })
+            foreach (int objects in new[] { 0, 10, 1_000, 10_000 })
+            {
+                if (!nearShare && objects == 0)
+                    continue;
+                var stepper = new DoorStepper(DoorScene.Create(objects, nearShare: nearShare), DoorMethod.Retail);
+                var start = DoorWorkloads.TransitionStart;
+                var target = DoorWorkloads.TransitionTarget;
+                double ns = Measure(n => { for (int i = 0; i < n; i++) stepper.Resolve(start, target); }, 1, 0.3);
+                scale.Add((objects, nearShare, ns));
+                Progress($"scale    {objects,6} other objects ({(nearShare ? "1 in 100 in the door's cell" : "none in the door's cell")}): transition {ns:0} ns");
+            }
 
         if (full)
         {

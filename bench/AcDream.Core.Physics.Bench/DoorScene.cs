@@ -41,7 +41,10 @@ public sealed class DoorScene
     public static MoverDescription Player { get; } = MoverDescription.Player();
 
     /// <summary>Builds the scene with <paramref name="extraObjects"/> small props scattered over the landblock (most in other cells).</summary>
-    public static DoorScene Create(int extraObjects = 0, int seed = 1234)
+    /// <param name="extraObjects">Props to register besides the door.</param>
+    /// <param name="seed">Seed of the props' placement.</param>
+    /// <param name="nearShare">Put one prop in a hundred in the door's own cell (true), or every prop elsewhere (false).</param>
+    public static DoorScene Create(int extraObjects = 0, int seed = 1234, bool nearShare = true)
     {
         var world = new PhysicsWorld();
         world.Cells.AddLandblock(Terrain.Flat(Landblock, 0f));
@@ -49,7 +52,7 @@ public sealed class DoorScene
         world.Objects.Register(DoorId, door, At(DoorOrigin), 1f, (PhysicsState)0x10008);
         var reference = new ReferenceScene();
         reference.AddObject(door, new Frame(DoorOrigin));
-        AddProps(world, extraObjects, seed);
+        AddProps(world, extraObjects, seed, nearShare);
         return new DoorScene(world, reference);
     }
 
@@ -57,7 +60,7 @@ public sealed class DoorScene
     /// Registers props: one in a hundred in the door's 24 m cell (at least 4 m from the door), the rest
     /// anywhere else in the landblock. Props alternate between a barrel (a cylinder) and a rock (a sphere).
     /// </summary>
-    private static void AddProps(PhysicsWorld world, int count, int seed)
+    private static void AddProps(PhysicsWorld world, int count, int seed, bool nearShare)
     {
         if (count <= 0)
             return;
@@ -68,7 +71,7 @@ public sealed class DoorScene
         for (int i = 0; i < count; i++)
         {
             Vector3 p;
-            if (i % 100 == 0)
+            if (nearShare && i % 100 == 0)
             {
                 do p = new Vector3(cellMin + 1 + 22 * rng.NextSingle(), cellMin + 1 + 22 * rng.NextSingle(), 0);
                 while (Vector2.Distance(new Vector2(p.X, p.Y), new Vector2(DoorOrigin.X, DoorOrigin.Y)) < 4f);

@@ -107,14 +107,17 @@ public static class Reports
         return sb.ToString();
     }
 
-    /// <summary>The scale table (retail door transition with other objects in the landblock).</summary>
-    public static string ScaleTable(IReadOnlyList<(int Objects, double Ns)> scale)
+    /// <summary>
+    /// The scale table (retail door transition with other objects in the landblock): the cost follows the
+    /// objects in the cells the path touches (retail tests every object listed in those cells), not the total.
+    /// </summary>
+    public static string ScaleTable(IReadOnlyList<(int Objects, bool NearShare, double Ns)> scale)
     {
         var sb = new StringBuilder();
-        sb.AppendLine("| Other objects in the landblock | door transition (ns) |");
-        sb.AppendLine("|---:|---:|");
-        foreach (var (objects, ns) in scale)
-            sb.AppendLine($"| {objects:N0} | {Ns(ns)} |");
+        sb.AppendLine("| Other objects in the landblock | of them in the door's cell | door transition (ns) |");
+        sb.AppendLine("|---:|---:|---:|");
+        foreach (var (objects, nearShare, ns) in scale)
+            sb.AppendLine($"| {objects:N0} | {(nearShare ? (objects + 99) / 100 : 0):N0} | {Ns(ns)} |");
         return sb.ToString();
     }
 
