@@ -5,13 +5,14 @@ namespace AcDream.Core.Physics.Tests.Support;
 /// <summary>Minimal scenes for apparatus tests: each holds only what its behaviour needs.</summary>
 internal static class Scenes
 {
-    public const uint DoorId = 0x7000_0001;
-    public static readonly Vector3 DoorOrigin = new(100, 100, 0);
+    public const uint DoorId = Bench.DoorScene.DoorId;
+    public static readonly Vector3 DoorOrigin = Bench.DoorScene.DoorOrigin;
 
     /// <summary>The slab's faces in door space: front at Y = -0.009, back at Y = 0.252 (the seed's door).</summary>
-    public const float SlabFront = -0.009f, SlabBack = 0.252f, SlabHalfWidth = 0.5f, SlabHeight = 2.2f;
+    public const float SlabFront = Bench.DoorScene.SlabFront, SlabBack = Bench.DoorScene.SlabBack,
+        SlabHalfWidth = Bench.DoorScene.SlabHalfWidth, SlabHeight = Bench.DoorScene.SlabHeight;
 
-    public const float PlayerRadius = 0.48f;
+    public const float PlayerRadius = Bench.DoorScene.PlayerRadius;
 
     /// <summary>A flat floor at z = 0 with the door standing on it, facing -Y, in the middle of a land cell.</summary>
     public static PhysicsWorld Door(PhysicsState state = (PhysicsState)0x10008, bool registerShapesOnly = false)
@@ -26,19 +27,7 @@ internal static class Scenes
     }
 
     /// <summary>How deep the retail player's spheres at <paramref name="origin"/> reach into the door slab (≤ 0 when clear).</summary>
-    public static float SlabPenetration(Vector3 origin)
-    {
-        var min = DoorOrigin + new Vector3(-SlabHalfWidth, SlabFront, 0);
-        var max = DoorOrigin + new Vector3(SlabHalfWidth, SlabBack, SlabHeight);
-        float worst = float.NegativeInfinity;
-        foreach (float z in new[] { 0.475f, 1.35f })
-        {
-            var c = origin + new Vector3(0, 0, z);
-            var closest = Vector3.Clamp(c, min, max);
-            worst = MathF.Max(worst, PlayerRadius - Vector3.Distance(c, closest));
-        }
-        return worst;
-    }
+    public static float SlabPenetration(Vector3 origin) => Bench.DoorScene.SlabPenetration(origin);
 
     /// <summary>The seed's apparatus player: the retail player's spheres and step-up, with step-down 0.04.</summary>
     public static MoverDescription SeedPlayer() => MoverDescription.Player(stepDownHeight: 0.04f);

@@ -43,22 +43,11 @@ internal static class TestGeometry
         return BspTree.Create(faces, nodes);
     }
 
-    /// <summary>A door-like setup: a slab part, a foot cylsphere and a base sphere (the seed's Holtburg door look-alike).</summary>
-    public static PhysicsSetup DoorSetup()
-    {
-        // A leaf's polygons are tried in order and the first hit wins (retail BSPLEAF), so a sphere that
-        // overlaps the slab near a vertical edge reports whichever face comes first. The door lists its
-        // broad faces (front -Y, back +Y) before the narrow sides, top and bottom.
-        var slab = new PhysicsModel(BoxTree(new Vector3(-0.5f, -0.009f, 0f), new Vector3(0.5f, 0.252f, 2.2f), [3, 2, 0, 1, 4, 5]), name: "door slab");
-        return new PhysicsSetup
-        {
-            Parts = [new SetupPart(slab, Frame.Identity)],
-            CylSpheres = [new CylSphere(new Vector3(0, 0.12f, 0), 0.5f, 0.2f)],
-            Spheres = [new Sphere(new Vector3(0, 0.06f, 0.1f), 0.1f)],
-            Height = 2.2f,
-            Radius = 0.892f,
-        };
-    }
+    /// <summary>
+    /// The door-like setup of the seed's Holtburg door: the slab (broad faces first), the foot cylsphere and
+    /// the base sphere. One definition serves the tests and the benchmark (<see cref="Bench.DoorScene"/>).
+    /// </summary>
+    public static PhysicsSetup DoorSetup() => Bench.DoorScene.DoorSetup();
 
     public static PhysicsWorld FlatWorld(float height = 0f)
     {
