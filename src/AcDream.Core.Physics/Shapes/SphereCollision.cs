@@ -231,18 +231,9 @@ public static class SphereCollision
         collisions.SetCollisionNormal(normal);
 
         Vector3 planeNormal = ContactNormal(collisions);
-        Vector3 tangent = Vector3.Cross(normal, planeNormal);
         Vector3 move = path.GlobalSphere[sphereNum].Center - current + path.CurToCheckBlockOffset();
-
-        float tangentLenSq = tangent.LengthSquared();
-        if (tangentLenSq >= PhysicsConstants.Epsilon)
-        {
-            Vector3 along = tangent * (Vector3.Dot(move, tangent) / tangentLenSq);
-            if (along.LengthSquared() < PhysicsConstants.Epsilon)
-                return TransitionState.Collided;
-            path.AddOffsetToCheckPos(along - move);
-            return TransitionState.Slid;
-        }
+        if (TrySlideAlongCrease(path, normal, planeNormal, move, out var slid))
+            return slid;
 
         // Retail tests the contact plane's normal against disp here, not the collision normal
         // (CSphere.c, acclient.c:358708).
@@ -291,17 +282,8 @@ public static class SphereCollision
         collisions.SetCollisionNormal(collisionNormal);
         Vector3 move = center - currPos + path.CurToCheckBlockOffset();
         Vector3 planeNormal = ContactNormal(collisions);
-        Vector3 tangent = Vector3.Cross(collisionNormal, planeNormal);
-
-        float tangentLenSq = tangent.LengthSquared();
-        if (tangentLenSq >= PhysicsConstants.Epsilon)
-        {
-            Vector3 along = tangent * (Vector3.Dot(tangent, move) / tangentLenSq);
-            if (along.LengthSquared() < PhysicsConstants.Epsilon)
-                return TransitionState.Collided;
-            path.AddOffsetToCheckPos(along - move);
-            return TransitionState.Slid;
-        }
+        if (TrySlideAlongCrease(path, collisionNormal, planeNormal, move, out var slid))
+            return slid;
 
         if (Vector3.Dot(collisionNormal, planeNormal) >= 0.0f)
         {
@@ -405,5 +387,31 @@ public static class SphereCollision
         var plane = new Plane(normal, -Vector3.Dot(normal, point));
         transition.CollisionInfo.SetContactPlane(plane, isWater: true);
         transition.CollisionInfo.ContactPlaneCellId = transition.SpherePath.CheckPos.CellId;
+    }
+
+    /// <summary>
+    /// The shared heart of retail's slide_sphere variants: when the collision plane and the contact plane
+    /// meet in a line (their normals' cross product is not too short), keep only the part of the move
+    /// along that line. Retail quirk: a slide shorter than √EPSILON (its squared length under EPSILON) is
+    /// refused as Collided. False when the planes have no usable crease; the caller handles that case.
+    /// </summary>
+    private static bool TrySlideAlongCrease(SpherePath path, Vector3 collisionNormal, Vector3 planeNormal, Vector3 move, out TransitionState state)
+    {
+        Vector3 crease = Vector3.Cross(collisionNormal, planeNormal);
+        float creaseLenSq = crease.LengthSquared();
+        if (creaseLenSq < PhysicsConstants.Epsilon)
+        {
+            state = TransitionState.OK;
+            return false;
+        }
+        Vector3 along = crease * (Vector3.Dot(move, crease) / creaseLenSq);
+        if (along.LengthSquared() < PhysicsConstants.Epsilon)
+        {
+            state = TransitionState.Collided;
+            return true;
+        }
+        path.AddOffsetToCheckPos(along - move);
+        state = TransitionState.Slid;
+        return true;
     }
 }
