@@ -43,6 +43,12 @@ public sealed class CollisionInfo
     public bool CollidedWithEnvironment;
     /// <summary>Frames spent falling in place (retail's stationary-fall counter).</summary>
     public int FramesStationaryFall;
+    /// <summary>
+    /// The transition asked for the mover's velocity to be zeroed (retail calls OBJECTINFO::kill_velocity
+    /// when a blocked mover falls back on its last known contact plane). The transition has no velocity of
+    /// its own; a client applies this.
+    /// </summary>
+    public bool VelocityKilled;
 
     /// <summary>Clears everything (retail COLLISIONINFO::init); keeps the list's capacity.</summary>
     public void Reset()
@@ -64,6 +70,7 @@ public sealed class CollisionInfo
         LastCollidedObject = 0;
         CollidedWithEnvironment = false;
         FramesStationaryFall = 0;
+        VelocityKilled = false;
     }
 
     /// <summary>Sets the contact plane.</summary>
@@ -92,16 +99,15 @@ public sealed class CollisionInfo
     }
 
     /// <summary>
-    /// Records a sliding normal: the horizontal part of <paramref name="normal"/>. Retail quirk: it
-    /// keeps the horizontal part unnormalized, and tests the full vector for smallness (ACE
-    /// CollisionInfo.SetSlidingNormal).
+    /// Records a sliding normal: the horizontal part of <paramref name="normal"/>, normalized, or zero when
+    /// too short (retail COLLISIONINFO::set_sliding_normal, acclient CTransition.c:244-252; ACE keeps the
+    /// horizontal part unnormalized, which retail does not).
     /// </summary>
     public void SetSlidingNormal(Vector3 normal)
     {
         SlidingNormalValid = true;
-        SlidingNormal = new Vector3(normal.X, normal.Y, 0f);
-        if (VectorMath.NormalizeCheckSmall(ref normal))
-            SlidingNormal = Vector3.Zero;
+        var horizontal = new Vector3(normal.X, normal.Y, 0f);
+        SlidingNormal = VectorMath.NormalizeCheckSmall(ref horizontal) ? Vector3.Zero : horizontal;
     }
 
     /// <summary>Adds an object to the collided list once; a non-OK result makes it the last collided.</summary>

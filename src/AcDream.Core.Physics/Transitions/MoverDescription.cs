@@ -120,8 +120,9 @@ public struct MoverState
 public readonly struct MoveResult
 {
     internal MoveResult(bool succeeded, MoverState next, TransitionState lastState, bool collisionNormalValid, Vector3 collisionNormal,
-        bool collidedWithEnvironment, ReadOnlyMemory<uint> collidedObjects, uint lastCollidedObject)
+        bool collidedWithEnvironment, ReadOnlyMemory<uint> collidedObjects, uint lastCollidedObject, bool velocityKilled = false)
     {
+        VelocityKilled = velocityKilled;
         Succeeded = succeeded;
         Next = next;
         LastState = lastState;
@@ -150,4 +151,6 @@ public readonly struct MoveResult
     public uint LastCollidedObject { get; }
     /// <summary>The resolved position.</summary>
     public Position Position => Next.Position;
+    /// <summary>Retail asked for the mover's velocity to be zeroed (kill_velocity); a client applies it.</summary>
+    public bool VelocityKilled { get; }
 }

@@ -150,6 +150,6 @@ public sealed class PhysicsEngine
             _collided = new uint[Math.Max(count, _collided.Length * 2)];
         ci.CollidedObjects.CopyTo(_collided);
         return new MoveResult(ok, next, ok ? TransitionState.OK : TransitionState.Collided, ci.CollisionNormalValid, ci.CollisionNormal,
-            ci.CollidedWithEnvironment, new ReadOnlyMemory<uint>(_collided, 0, count), ci.LastCollidedObject);
+            ci.CollidedWithEnvironment, new ReadOnlyMemory<uint>(_collided, 0, count), ci.LastCollidedObject, ci.VelocityKilled);
     }
 }

@@ -15,22 +15,29 @@ public sealed partial class Transition
         var ci = CollisionInfo;
         if ((ObjectInfo.State & ObjectInfoState.OnWalkable) == 0 || (ObjectInfo.State & ObjectInfoState.EdgeSlide) == 0)
         {
-            state = SetEdgeSlide(true, true, TransitionState.OK);
+            ResetForEdgeSlide(true, true);
+            state = TransitionState.OK;
             return true;
         }
+        // Retail restores the check position and clears the contact plane first, then slides from there
+        // (CTransition::edge_slide, acclient CTransition.c:1205-1217): the slide must not be undone.
         if (ci.ContactPlaneValid && ci.ContactPlane.Normal.Z < zLimit)
         {
-            state = SetEdgeSlide(true, false, CliffSlide(ci.ContactPlane));
+            var cliff = ci.ContactPlane;
+            ResetForEdgeSlide(true, false);
+            state = CliffSlide(cliff);
             return false;
         }
         if (path.Walkable is not null)
         {
-            state = SetEdgeSlide(false, false, PrecipiceSlide());
+            ResetForEdgeSlide(false, false);
+            state = PrecipiceSlide();
             return state == TransitionState.Collided;
         }
         if (ci.ContactPlaneValid)
         {
-            state = SetEdgeSlide(true, true, TransitionState.OK);
+            ResetForEdgeSlide(true, true);
+            state = TransitionState.OK;
             return true;
         }
 
@@ -52,8 +59,8 @@ public sealed partial class Transition
         return true;
     }
 
-    /// <summary>Retail set_edge_slide: restores the check position and clears the contact plane before the slide result stands.</summary>
-    private TransitionState SetEdgeSlide(bool dropWalkable, bool cellsValid, TransitionState state)
+    /// <summary>Retail set_edge_slide: restores the check position and clears the contact plane, before any slide.</summary>
+    private void ResetForEdgeSlide(bool dropWalkable, bool cellsValid)
     {
         var path = SpherePath;
         if (dropWalkable)
@@ -62,7 +69,6 @@ public sealed partial class Transition
         CollisionInfo.ClearContactPlane();
         if (cellsValid)
             path.CellArrayValid = true;
-        return state;
     }
 
     /// <summary>

@@ -32,6 +32,7 @@ public sealed partial class Transition
                         return state;
                     break;
                 case TransitionState.Collided:
+                    path.NegPolyHit = false;
                     return state;
                 case TransitionState.Adjusted:
                     path.NegPolyHit = false;
@@ -149,7 +150,10 @@ public sealed partial class Transition
         path.RestoreCheckPos();
         ci.ClearContactPlane();
         if (ci.LastKnownContactPlaneValid)
+        {
             ci.LastKnownContactPlaneValid = false;
+            ci.VelocityKilled = true;
+        }
         else
             ci.SetCollisionNormal(path.StepUpNormal);
         return TransitionState.Collided;

@@ -21,7 +21,7 @@ public sealed partial class Transition
             path.CurCell = path.CheckCell;
             path.CacheGlobalCurrCenter();
         }
-        else if (path.PlacementAllowsSliding && ObjectInfo.TargetId == 0)
+        else if (path.PlacementAllowsSliding)
         {
             CollisionInfo.Reset();
         }
@@ -153,7 +153,8 @@ public sealed partial class Transition
             return false;
         int ringCount = (int)MathF.Ceiling(rings);
         float ringStep = reach / ringCount;
-        float arcStep = MathF.PI * ringStep / radius;
+        // Retail writes π as 3.1415999 here (acclient CTransition.c:1588).
+        float arcStep = 3.1415999f * ringStep / radius;
         float distance = 0f, arc = 0f;
         for (int ring = 0; ring < ringCount; ring++)
         {

@@ -70,6 +70,7 @@ public sealed partial class Transition
     {
         var path = SpherePath;
         CollisionInfo.ClearContactPlane();
+        path.StepUp = false;
         return SphereCollision.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius,
             ref path.StepUpNormal, path.GlobalCurrCenter[0].Center);
     }
@@ -83,8 +84,10 @@ public sealed partial class Transition
         var path = SpherePath;
         if ((ObjectInfo.State & ObjectInfoState.OnWalkable) == 0 || path.CheckWalkables())
             return true;
-        path.BackupCheckPos = path.CheckPos;
-        path.BackupCell = path.CheckCell;
+        // Retail keeps this probe's restore point in locals (CTransition.c:979, 1012), so the path's saved
+        // backup position survives for the caller.
+        var savedPos = path.CheckPos;
+        var savedCell = path.CheckCell;
         float height = ObjectInfo.StepDownHeight;
         path.WalkableAllowance = zCheck;
         path.CheckWalkable = true;
@@ -96,7 +99,7 @@ public sealed partial class Transition
         path.AddOffsetToCheckPos(new Vector3(0, 0, -height));
         var state = TransitionalInsert(1);
         path.CheckWalkable = false;
-        path.SetCheckPos(path.BackupCheckPos, path.BackupCell);
+        path.SetCheckPos(savedPos, savedCell);
         return state != TransitionState.OK;
     }
 }

@@ -106,6 +106,7 @@ public sealed partial class Transition
         {
             if (!freeRotate)
                 path.CurPos.Frame.Orientation = path.EndPos.Frame.Orientation;
+            path.SetCheckPos(path.CurPos, path.CurCell);
             path.CellArrayValid = true;
             path.HitsInteriorCell = false;
             BuildCellArray(findContaining: false);
@@ -219,6 +220,7 @@ public sealed partial class Transition
                 {
                     if (ci.LastKnownContactPlaneValid)
                     {
+                        ci.VelocityKilled = true;
                         float dist = VectorMath.Distance(ci.LastKnownContactPlane, path.GlobalCurrCenter[0].Center);
                         if (path.GlobalSphere[0].Radius + PhysicsConstants.Epsilon > MathF.Abs(dist))
                         {
@@ -296,8 +298,20 @@ public sealed partial class Transition
         }
     }
 
-    private static bool PositionsEqual(in Position a, in Position b) =>
-        a.CellId == b.CellId && a.Frame.Origin == b.Frame.Origin && a.Frame.Orientation == b.Frame.Orientation;
+    /// <summary>
+    /// Retail Frame::is_equal: the same within EPSILON on every origin axis and quaternion component
+    /// (acclient MasterProperty.c:1794); the cell ids must match.
+    /// </summary>
+    private static bool PositionsEqual(in Position a, in Position b)
+    {
+        if (a.CellId != b.CellId)
+            return false;
+        const float e = PhysicsConstants.Epsilon;
+        var d = a.Frame.Origin - b.Frame.Origin;
+        var q = a.Frame.Orientation - b.Frame.Orientation;
+        return MathF.Abs(d.X) <= e && MathF.Abs(d.Y) <= e && MathF.Abs(d.Z) <= e
+            && MathF.Abs(q.X) < e && MathF.Abs(q.Y) < e && MathF.Abs(q.Z) < e && MathF.Abs(q.W) < e;
+    }
 
     /// <summary>Accepts the check position as the current one.</summary>
     internal void SetCurrentCheckPos()
@@ -335,10 +349,9 @@ public sealed partial class Transition
         CollisionInfo.LastKnownContactPlaneCellId = cellId;
     }
 
-    /// <summary>Sets the sliding normal carried from the previous frame (retail init_sliding_normal).</summary>
-    public void InitSlidingNormal(Vector3 normal)
-    {
-        CollisionInfo.SlidingNormalValid = true;
-        CollisionInfo.SlidingNormal = VectorMath.NormalizeCheckSmall(ref normal) ? Vector3.Zero : normal;
-    }
+    /// <summary>
+    /// Sets the sliding normal carried from the previous frame: its horizontal part, normalized (retail
+    /// CPhysicsObj's transition set-up, acclient CPhysicsObj.c:1695-1710, zeroes Z before normalizing).
+    /// </summary>
+    public void InitSlidingNormal(Vector3 normal) => CollisionInfo.SetSlidingNormal(normal);
 }

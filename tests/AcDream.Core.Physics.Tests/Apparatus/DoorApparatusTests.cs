@@ -149,4 +149,19 @@ public class DoorApparatusTests
         long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
         Assert.Equal(0, allocated);
     }
+
+    /// <summary>
+    /// A grounded mover blocked by the slab falls back on its last known contact plane, and retail then
+    /// zeroes its velocity (OBJECTINFO::kill_velocity in validate_transition); free frames do not.
+    /// </summary>
+    [Fact]
+    public void BlockedFrames_AskForTheVelocityToBeKilled_FreeFramesDoNot()
+    {
+        var world = Scenes.Door();
+        var player = Scenes.Player(world, 100, 98);
+        player.Walk(new Vector3(0, 0.1f, 0), 20);
+        Assert.False(player.Frames[0].Result.VelocityKilled);
+        Assert.Contains(player.Frames, f => f.Result.VelocityKilled && f.After == f.Before);
+        Assert.All(player.Frames.Where(f => f.Result.VelocityKilled), f => Assert.True(f.Result.CollisionNormalValid));
+    }
 }

@@ -88,4 +88,21 @@ public class StepAndEdgeTests
         Assert.True(player.Origin.Y > 106.4f, $"y = {player.Origin.Y}");
         Assert.False(player.State.Contact, "past the edge there is no ground within the step-down height");
     }
+
+    /// <summary>
+    /// Walking diagonally off the platform's far edge with EdgeSlide: retail restores the check position and
+    /// then slides along the precipice (CTransition::edge_slide), so the mover keeps moving along the edge
+    /// every frame and never drops off.
+    /// </summary>
+    [Fact]
+    public void WalkingDiagonallyAtALedge_WithEdgeSlide_SlidesAlongItEveryFrame()
+    {
+        var world = Platform(1f);
+        var player = new Mover(world, MoverDescription.Player(), MoverState.OnFloor(TestGeometry.At(99, 105, 1f), 1f));
+        player.Walk(new Vector3(0.0707f, 0.0707f, 0), 20);
+        var atEdge = player.Frames.Skip(12).ToList();
+        Assert.All(atEdge, f => Assert.True(f.After.X - f.Before.X > 0.01f, $"stalled at {f.Before}"));
+        Assert.All(player.Frames, f => Assert.InRange(f.After.Z, 1f, 1.01f));
+        Assert.True(player.State.Contact);
+    }
 }
