@@ -286,8 +286,9 @@ public static class SceneLoader
                 var po = new JsonObj(value, p);
                 PhysicsModel? model = po.Opt("model") is { } m ? Model(m, po.Child("model")) : null;
                 var frame = new Frame(po.Opt("origin") is { } origin ? JsonRead.Vec3(origin, po.Child("origin")) : Vector3.Zero, po.Rotation("rotation"));
+                float defaultScale = po.Float("defaultScale", 1f);
                 po.End();
-                parts.Add(new SetupPart(model, frame));
+                parts.Add(new SetupPart(model, frame, defaultScale));
             }
             var cyls = new List<CylSphere>();
             foreach (var (value, p) in o.Array("cylSpheres", optional: true))

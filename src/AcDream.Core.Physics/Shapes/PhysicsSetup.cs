@@ -7,16 +7,25 @@ namespace AcDream.Core.Physics;
 public sealed class SetupPart
 {
     /// <summary>Creates a part.</summary>
-    public SetupPart(PhysicsModel? model, Frame frame)
+    /// <param name="model">The part's physics model, or null.</param>
+    /// <param name="frame">The part's placement in the setup's space.</param>
+    /// <param name="defaultScale">The setup's default scale for this part (retail Setup default_scale, Z component).</param>
+    public SetupPart(PhysicsModel? model, Frame frame, float defaultScale = 1f)
     {
         Model = model;
         Frame = frame;
+        DefaultScale = defaultScale;
     }
 
     /// <summary>The part's physics model, or null for a part without a physics BSP.</summary>
     public PhysicsModel? Model { get; }
     /// <summary>The part's placement in the setup's space.</summary>
     public Frame Frame { get; }
+    /// <summary>
+    /// The setup's default scale for this part. Retail scales a part's BSP by default_scale × the object's
+    /// scale and collides with the Z component (CPartArray, acclient CPartArray.c:1172-1213).
+    /// </summary>
+    public float DefaultScale { get; }
 }
 
 /// <summary>
@@ -67,6 +76,7 @@ public sealed class PhysicsSetup
         {
             if (Parts[i] is null) throw new ArgumentException($"{name}.parts[{i}]: is null.", $"{name}.parts[{i}]");
             Guard.Frame(Parts[i].Frame, $"{name}.parts[{i}].frame");
+            Guard.Positive(Parts[i].DefaultScale, $"{name}.parts[{i}].defaultScale");
         }
         for (int i = 0; i < CylSpheres.Count; i++)
             Guard.CylSphere(CylSpheres[i], $"{name}.cylSpheres[{i}]");

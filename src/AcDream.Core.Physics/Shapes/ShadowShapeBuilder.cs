@@ -8,7 +8,7 @@ public static class ShadowShapeBuilder
 {
     /// <summary>
     /// Emits every shape of the setup, scaled as retail scales them: one BSP shape per part that has a
-    /// physics model (part origin × scale, model scale = scale), one cylinder per cylsphere (low point,
+    /// physics model (part origin × scale, model scale = scale × the part's default scale), one cylinder per cylsphere (low point,
     /// radius and height × scale), one sphere per sphere (centre and radius × scale). All are kept: retail
     /// stores both a door's BSP and its cylinder and chooses between them when colliding.
     /// Order: BSP parts, then cylinders, then spheres, each in setup order.
@@ -28,7 +28,7 @@ public static class ShadowShapeBuilder
             if (part.Model is null)
                 continue;
             var frame = new Frame(part.Frame.Origin * scale, Guard.Rotation(part.Frame.Orientation, $"{name}.parts[{i}].frame.orientation"));
-            shapes.Add(ShadowShape.ForPart(i, part.Model, frame, scale));
+            shapes.Add(ShadowShape.ForPart(i, part.Model, frame, scale * part.DefaultScale));
         }
         for (int i = 0; i < setup.CylSpheres.Count; i++)
         {

@@ -69,4 +69,22 @@ public class ShadowShapeBuilderTests
         var ex = Assert.Throws<ArgumentException>(() => ShadowShapeBuilder.FromSetup(setup));
         Assert.Contains("cylSpheres[0].radius", ex.Message);
     }
+
+    [Fact]
+    public void FromSetup_PartDefaultScale_MultipliesTheObjectScale()
+    {
+        var model = TestGeometry.DoorSetup().Parts[0].Model;
+        var setup = new PhysicsSetup { Parts = [new SetupPart(model, new Frame(new Vector3(0, 0, 1)), defaultScale: 2f)] };
+        var part = ShadowShapeBuilder.FromSetup(setup, 1.5f)[0];
+        Assert.Equal(3f, part.ModelScale, 6);
+        AssertVec.Near(new Vector3(0, 0, 1.5f), part.PartFrame.Origin); // the origin takes the object's scale only
+    }
+
+    [Fact]
+    public void FromSetup_ZeroPartDefaultScale_NamesThePart()
+    {
+        var setup = new PhysicsSetup { Parts = [new SetupPart(null, Frame.Identity, defaultScale: 0f)] };
+        var ex = Assert.Throws<ArgumentException>(() => ShadowShapeBuilder.FromSetup(setup));
+        Assert.Contains("parts[0].defaultScale", ex.Message);
+    }
 }
