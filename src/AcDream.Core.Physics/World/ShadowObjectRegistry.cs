@@ -177,17 +177,40 @@ public sealed class ShadowObjectRegistry
         }
     }
 
+    /// <summary>
+    /// Removes an object's rows from its cells the retail way: the cell's last object takes the removed
+    /// object's place (CObjCell::remove_shadow_object moves the last entry into the hole, acclient
+    /// CObjCell.c:491), so the order objects are tested in changes as retail's does.
+    /// </summary>
     private void RemoveRows(uint entityId, Record record)
     {
         foreach (uint cellId in record.Cells)
         {
             if (!_byCell.TryGetValue(cellId, out var rows))
                 continue;
-            int write = 0;
-            for (int read = 0; read < rows.Count; read++)
-                if (rows[read].EntityId != entityId)
-                    rows[write++] = rows[read];
-            rows.RemoveRange(write, rows.Count - write);
+            int start = 0;
+            while (start < rows.Count && rows[start].EntityId != entityId)
+                start++;
+            if (start == rows.Count)
+                continue;
+            int end = start;
+            while (end < rows.Count && rows[end].EntityId == entityId)
+                end++;
+            int lastStart = rows.Count;
+            while (lastStart > end && rows[lastStart - 1].EntityId == rows[rows.Count - 1].EntityId)
+                lastStart--;
+            if (lastStart > end)
+            {
+                // Move the last object's rows into the hole, then drop the tail.
+                var last = rows.GetRange(lastStart, rows.Count - lastStart);
+                rows.RemoveRange(lastStart, rows.Count - lastStart);
+                rows.RemoveRange(start, end - start);
+                rows.InsertRange(start, last);
+            }
+            else
+            {
+                rows.RemoveRange(start, end - start);
+            }
             if (rows.Count == 0)
                 _byCell.Remove(cellId);
         }

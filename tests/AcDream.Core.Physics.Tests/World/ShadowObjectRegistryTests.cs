@@ -152,4 +152,21 @@ public class ShadowObjectRegistryTests
         }
         Assert.Equal(model.Count, reg.Count);
     }
+
+    [Fact]
+    public void Unregister_MovesTheCellsLastObjectIntoTheHole_AsRetailDoes()
+    {
+        var world = TestGeometry.FlatWorld();
+        var reg = world.Objects;
+        var twoShapes = new PhysicsSetup { Spheres = [new Sphere(Vector3.Zero, 0.3f), new Sphere(new Vector3(0, 0, 1), 0.3f)] };
+        for (uint id = 1; id <= 4; id++)
+            reg.Register(id, id == 4 ? twoShapes : Ball(0.3f), TestGeometry.At(10 + id, 12, 0), 1f, PhysicsState.None);
+        uint cell = TestGeometry.At(12, 12, 0).CellId;
+        reg.Unregister(2);
+        Assert.Equal(new uint[] { 1, 4, 4, 3 }, reg.RowsInCell(cell).ToArray().Select(r => r.EntityId).ToArray());
+        reg.Unregister(4);
+        Assert.Equal(new uint[] { 1, 3 }, reg.RowsInCell(cell).ToArray().Select(r => r.EntityId).ToArray());
+        reg.Unregister(3);
+        Assert.Equal(new uint[] { 1 }, reg.RowsInCell(cell).ToArray().Select(r => r.EntityId).ToArray());
+    }
 }
