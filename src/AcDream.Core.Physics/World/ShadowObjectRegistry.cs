@@ -149,21 +149,73 @@ public sealed class ShadowObjectRegistry
         return new Sphere(center, radius);
     }
 
-    /// <summary>The cells the object's bounding sphere touches, starting from its own cell (retail calc_cross_cells).</summary>
+    /// <summary>
+    /// The cells an object is listed in, by retail's rule per kind of object (CPhysicsObj::calc_cross_cells):
+    /// an object with HasPhysicsBsp by its BSP parts' boxes (outdoors: every land cell under each box);
+    /// an object with cylspheres by one sphere per cylsphere at its low point with its radius — retail
+    /// quirk: both unscaled, at most ten (CObjCell::find_cell_list for cylspheres); anything else by one
+    /// sphere around its shapes (retail uses the setup's sorting sphere, which we do not carry).
+    /// Indoor cells are found through the cell graph's sphere search in every case.
+    /// </summary>
     private void FindCells(Record record, List<uint> cells)
     {
         cells.Clear();
         var bounds = new Sphere(record.Position.LocalToGlobal(record.LocalBounds.Center), record.LocalBounds.Radius);
-        ReadOnlySpan<Sphere> one = [bounds];
-        _graph.FindCellList(record.Position, one, _scratch, findContaining: false, path: null);
-        bool hasOwn = false;
-        for (int i = 0; i < _scratch.Count; i++)
+        bool bspObject = (record.State & PhysicsState.HasPhysicsBsp) != 0 && Array.Exists(record.Shapes, s => s.Kind == ShadowShapeKind.Bsp);
+        if (!bspObject && record.CylCount > 0)
         {
-            cells.Add(_scratch[i].Id);
-            hasOwn |= _scratch[i].Id == record.Position.CellId;
+            Span<Sphere> feet = stackalloc Sphere[Math.Min(record.CylCount, MaxCylSpheresForCells)];
+            int n = 0;
+            foreach (var shape in record.Shapes)
+            {
+                if (shape.Kind != ShadowShapeKind.Cylinder || n == feet.Length)
+                    continue;
+                var c = shape.Cylinder;
+                feet[n++] = new Sphere(record.Position.LocalToGlobal(c.LowPoint / record.Scale), c.Radius / record.Scale);
+            }
+            AddFound(record, feet[..n], cells);
         }
-        if (!hasOwn)
+        else
+        {
+            AddFound(record, [bounds], cells);
+        }
+        if (bspObject && LandDefs.IsLandCell(record.Position.CellId))
+            foreach (var shape in record.Shapes)
+                if (shape.Kind == ShadowShapeKind.Bsp)
+                    AddLandCellsUnderBox(record, shape, cells);
+        if (!cells.Contains(record.Position.CellId))
             cells.Insert(0, record.Position.CellId);
+    }
+
+    /// <summary>Retail lists a cylsphere object by at most this many of its cylspheres.</summary>
+    private const int MaxCylSpheresForCells = 10;
+
+    private void AddFound(Record record, ReadOnlySpan<Sphere> spheres, List<uint> cells)
+    {
+        _graph.FindCellList(record.Position, spheres, _scratch, findContaining: false, path: null);
+        for (int i = 0; i < _scratch.Count; i++)
+            if (!cells.Contains(_scratch[i].Id))
+                cells.Add(_scratch[i].Id);
+    }
+
+    /// <summary>Every loaded land cell under the horizontal box around a BSP part's bounding sphere.</summary>
+    private void AddLandCellsUnderBox(Record record, ShadowShape shape, List<uint> cells)
+    {
+        var centre = record.Position.LocalToGlobal(shape.Bounds.Center);
+        float r = shape.Bounds.Radius;
+        uint block = record.Position.CellId >> 16;
+        int baseX = (int)(block >> 8) * 8, baseY = (int)(block & 0xFF) * 8;
+        int x0 = baseX + (int)MathF.Floor((centre.X - r) / PhysicsConstants.LandCellLength);
+        int x1 = baseX + (int)MathF.Floor((centre.X + r) / PhysicsConstants.LandCellLength);
+        int y0 = baseY + (int)MathF.Floor((centre.Y - r) / PhysicsConstants.LandCellLength);
+        int y1 = baseY + (int)MathF.Floor((centre.Y + r) / PhysicsConstants.LandCellLength);
+        for (int gx = Math.Max(x0, 0); gx <= Math.Min(x1, 2039); gx++)
+            for (int gy = Math.Max(y0, 0); gy <= Math.Min(y1, 2039); gy++)
+            {
+                uint id = ((uint)(gx >> 3) << 24) | ((uint)(gy >> 3) << 16) | (uint)((gx & 7) * 8 + (gy & 7) + 1);
+                if (_graph.Get(id) is not null && !cells.Contains(id))
+                    cells.Add(id);
+            }
     }
 
     private void AddRows(uint entityId, Record record)

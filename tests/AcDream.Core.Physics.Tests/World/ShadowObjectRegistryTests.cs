@@ -169,4 +169,32 @@ public class ShadowObjectRegistryTests
         reg.Unregister(3);
         Assert.Equal(new uint[] { 1 }, reg.RowsInCell(cell).ToArray().Select(r => r.EntityId).ToArray());
     }
+
+    [Fact]
+    public void ALongBspWall_IsListedInEveryLandCellUnderItsBox()
+    {
+        var world = TestGeometry.FlatWorld();
+        var wall = new PhysicsModel(TestGeometry.BoxTree(new Vector3(-30, -0.2f, 0), new Vector3(30, 0.2f, 3)), name: "wall");
+        world.Objects.Register(9, new PhysicsSetup { Parts = [new SetupPart(wall, Frame.Identity)] }, TestGeometry.At(100, 108, 0), 1f, PhysicsState.Static);
+        // The wall's bounding sphere (r ≈ 30.1) spans x 69.9..130.1: land-cell columns 2 to 5.
+        var columns = world.Objects.CellsOf(9).Select(c => ((c & 0xFFFF) - 1) / 8).Distinct().OrderBy(x => x).ToArray();
+        Assert.Equal(new uint[] { 2, 3, 4, 5 }, columns);
+    }
+
+    /// <summary>
+    /// Retail lists a cylsphere object by a sphere at each cylsphere's low point with its radius, unscaled
+    /// (CObjCell::find_cell_list for cylspheres): a tall trunk near a border, even scaled up, stays in its cell.
+    /// </summary>
+    [Theory]
+    [InlineData(1f)]
+    [InlineData(3f)]
+    public void ACylinderObject_IsListedByItsUnscaledFoot(float scale)
+    {
+        var world = TestGeometry.FlatWorld();
+        var trunk = new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.3f, 20f)] };
+        world.Objects.Register(9, trunk, TestGeometry.At(23.5f, 12, 0), scale, PhysicsState.Static);
+        Assert.Equal(new[] { TestGeometry.At(23.5f, 12, 0).CellId }, world.Objects.CellsOf(9).ToArray());
+        world.Objects.Move(9, TestGeometry.At(23.8f, 12, 0));
+        Assert.Equal(2, world.Objects.CellsOf(9).Count);
+    }
 }
