@@ -47,4 +47,15 @@ public static class LandDefs
         uint index = (cellId & 0xFFFF) - 1;
         return new Vector3((index / 8) * PhysicsConstants.LandCellLength, (index % 8) * PhysicsConstants.LandCellLength, 0f);
     }
+
+    /// <summary>
+    /// The outdoor cell id at global land-cell coordinates (0..2039 on each axis: landblock × 8 + cell),
+    /// or 0 outside the world.
+    /// </summary>
+    public static uint LandCellAtGlobal(int gx, int gy)
+    {
+        if (gx < 0 || gy < 0 || gx >= 2040 || gy >= 2040)
+            return 0;
+        return ((uint)(gx >> 3) << 24) | ((uint)(gy >> 3) << 16) | (uint)((gx & 7) * 8 + (gy & 7) + 1);
+    }
 }

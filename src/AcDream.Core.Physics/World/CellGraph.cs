@@ -202,10 +202,8 @@ public sealed class CellGraph
 
     private void AddOutsideCell(CellArray cells, int gx, int gy)
     {
-        if (gx < 0 || gy < 0 || gx >= 2040 || gy >= 2040)
-            return;
-        uint id = ((uint)(gx >> 3) << 24) | ((uint)(gy >> 3) << 16) | (uint)((gx & 7) * 8 + (gy & 7) + 1);
-        if (Get(id) is { } cell)
+        uint id = LandDefs.LandCellAtGlobal(gx, gy);
+        if (id != 0 && Get(id) is { } cell)
             cells.Add(cell);
     }
 }

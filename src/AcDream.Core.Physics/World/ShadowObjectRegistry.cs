@@ -209,11 +209,11 @@ public sealed class ShadowObjectRegistry
         int x1 = baseX + (int)MathF.Floor((centre.X + r) / PhysicsConstants.LandCellLength);
         int y0 = baseY + (int)MathF.Floor((centre.Y - r) / PhysicsConstants.LandCellLength);
         int y1 = baseY + (int)MathF.Floor((centre.Y + r) / PhysicsConstants.LandCellLength);
-        for (int gx = Math.Max(x0, 0); gx <= Math.Min(x1, 2039); gx++)
-            for (int gy = Math.Max(y0, 0); gy <= Math.Min(y1, 2039); gy++)
+        for (int gx = x0; gx <= x1; gx++)
+            for (int gy = y0; gy <= y1; gy++)
             {
-                uint id = ((uint)(gx >> 3) << 24) | ((uint)(gy >> 3) << 16) | (uint)((gx & 7) * 8 + (gy & 7) + 1);
-                if (_graph.Get(id) is not null && !cells.Contains(id))
+                uint id = LandDefs.LandCellAtGlobal(gx, gy);
+                if (id != 0 && _graph.Get(id) is not null && !cells.Contains(id))
                     cells.Add(id);
             }
     }

@@ -56,6 +56,15 @@ public class LandDefsTests
         Assert.Equal(new Vector3(0, -192, 0), LandDefs.BlockOffset(0xA9B40001, 0xA9B30001));
     }
 
+    [Theory]
+    [InlineData(0, 0, 0x00000001u)]
+    [InlineData(0xA9 * 8 + 3, 0xB4 * 8 + 5, 0xA9B4001Eu)]   // cell (3,5): 3 * 8 + 5 + 1 = 30
+    [InlineData(2039, 2039, 0xFEFE0040u)]
+    [InlineData(-1, 0, 0u)]
+    [InlineData(2040, 0, 0u)]
+    public void LandCellAtGlobal_PacksLandblockAndCell(int gx, int gy, uint expected)
+        => Assert.Equal(expected, LandDefs.LandCellAtGlobal(gx, gy));
+
     [Fact]
     public void LandCellAt_NumbersCellsColumnMajorFromOne()
     {
