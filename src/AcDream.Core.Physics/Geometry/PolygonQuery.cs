@@ -125,28 +125,9 @@ public static class PolygonQuery
         if (inside)
             return true;
 
-        // Second pass: the point is outside some edge; find an edge or vertex within the disc.
-        previous = vertices.Length - 1;
-        for (int i = 0; i < vertices.Length; i++)
-        {
-            var start = vertices[previous];
-            previous = i;
-            var edge = vertices[i] - start;
-            var offset = point - start;
-            var inward = Vector3.Cross(normal, edge);
-            float side = Vector3.Dot(offset, inward);
-            if (side < 0f)
-            {
-                if (inward.LengthSquared() * discSquared < side * side)
-                    return false;
-                float along = Vector3.Dot(offset, edge);
-                if (along >= 0f && along <= edge.LengthSquared())
-                    return true;
-            }
-            if (offset.LengthSquared() <= discSquared)
-                return true;
-        }
-        return false;
+        // Second pass: the point is outside some edge; find an edge or vertex within the disc. This is the
+        // single-pass walk: with the point outside an edge, a walk that ends without deciding is a miss.
+        return DiscTouchesSinglePass(polygon, point, discSquared);
     }
 
     /// <summary>Retail CPolygon::hits_sphere: the precise test without a contact point.</summary>
