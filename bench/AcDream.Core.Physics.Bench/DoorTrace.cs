@@ -2,6 +2,7 @@ using System;
 using System.Globalization;
 using System.Numerics;
 using AcDream.Core.Physics.Bench.Accuracy;
+using AcDream.Core.Physics.Reference;
 
 namespace AcDream.Core.Physics.Bench;
 

@@ -4,6 +4,9 @@ using System.Globalization;
 using System.IO;
 using System.Numerics;
 using System.Text;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tool;
 

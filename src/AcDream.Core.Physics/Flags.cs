@@ -1,4 +1,5 @@
 using System;
+using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics;
 

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Transitions;
 namespace AcDream.Core.Physics;
 
 /// <summary>

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using System.Threading.Tasks;
+using AcDream.Core.Physics.Reference;
 
 namespace AcDream.Core.Physics.Bench.Accuracy;
 

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Bench.Accuracy;
 using BenchmarkDotNet.Attributes;
+using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Bench.Benchmarks;
 

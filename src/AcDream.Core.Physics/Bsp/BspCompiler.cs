@@ -1,8 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Bsp;
 
 /// <summary>
 /// Builds physics BSP trees (the retail BSPTREE shape) from convex polygons, for scenes written by hand

@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Bsp;
 
 /// <summary>
 /// The retail per-node recursions of a physics BSP (BSPNODE / BSPLEAF virtuals) over the flat layout of

@@ -1,7 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Bsp;
 
 /// <summary>Where a sphere lies against a cell BSP (retail BoundingType).</summary>
 public enum BoundingType

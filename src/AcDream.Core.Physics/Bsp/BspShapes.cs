@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Bsp;
 
 /// <summary>
 /// Shorthands for simple physics shapes written by hand: boxes, floor quads and rotated slabs, as

@@ -1,8 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Bsp;
 
 /// <summary>One node of a physics BSP tree, as given by a caller or a compiler (see <see cref="BspTree.Create"/>).</summary>
 public sealed class BspNodeData

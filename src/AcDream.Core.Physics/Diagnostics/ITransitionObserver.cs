@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Diagnostics;
 
 /// <summary>Why an object's shape was not tested.</summary>
 public enum SkipReason : byte

@@ -1,7 +1,8 @@
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Diagnostics;
 
 /// <summary>The kind of a recorded diagnostics event.</summary>
 public enum TransitionEventKind : byte

@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>
 /// How retail treats the back of a polygon (the DAT's SidesType / CullMode). A single-sided polygon

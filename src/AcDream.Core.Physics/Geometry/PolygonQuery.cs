@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>Which side of a plane something lies on (retail Sidedness).</summary>
 public enum Sidedness

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>A sphere: a centre and a radius (retail CSphere's data). Collision routines live in <see cref="SphereCollision"/>.</summary>
 public struct Sphere

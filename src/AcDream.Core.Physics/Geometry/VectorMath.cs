@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>Small vector helpers with retail's tolerances.</summary>
 internal static class VectorMath

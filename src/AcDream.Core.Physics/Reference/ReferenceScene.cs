@@ -1,8 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Reference;
 
 /// <summary>
 /// World-space geometry for <see cref="ReferenceSweep"/>: polygons, world-Z cylinders and spheres, in

@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Scenes;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Reference;
 
 /// <summary>The outcome of one <see cref="ReferenceSweep.Move"/>.</summary>
 public readonly struct ReferenceMoveResult

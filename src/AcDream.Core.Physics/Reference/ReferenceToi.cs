@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Reference;
 
 /// <summary>Which feature of a shape a swept sphere touched first.</summary>
 public enum ReferenceFeature : byte

@@ -3,8 +3,9 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>
 /// A JSON object being read strictly: every field asked for is remembered, and <see cref="End"/> refuses

@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>
 /// A loaded scene, ready to run: the world (cells, buildings, objects) and the movers with their motions.

@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>
 /// A scene or trajectory file is malformed: bad JSON, a wrong type, an unknown field, a bad value or a

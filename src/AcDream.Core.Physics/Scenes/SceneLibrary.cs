@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>The built-in scenes, embedded in the library as JSON (Scenes/BuiltIn/*.json), loadable by name.</summary>
 public static class SceneLibrary

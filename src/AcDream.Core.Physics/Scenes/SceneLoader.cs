@@ -5,8 +5,13 @@ using System.Numerics;
 using System.Security.Cryptography;
 using System.Text;
 using System.Text.Json;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Validation;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>
 /// Reads scene files (JSON, format version 1, described in docs/scene-format.md) into a <see cref="Scene"/>.

@@ -1,8 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.Reflection;
+using AcDream.Core.Physics.Diagnostics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>The diagnostics events of one frame of one mover, handed to a <see cref="SceneRunner"/> callback.</summary>
 /// <param name="MoverIndex">The mover's index in the scene.</param>

@@ -4,8 +4,9 @@ using System.IO;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>One frame of one mover: the requested target (the input) and everything the engine resolved (the outputs).</summary>
 public sealed class TrajectoryFrame

@@ -2,8 +2,10 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>The first place where a replay disagrees with its recording.</summary>
 public sealed class ReplayDifference

@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Transitions;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>
 /// The retail CCylSphere collision routines against a transition's moving spheres. The cylinder is an

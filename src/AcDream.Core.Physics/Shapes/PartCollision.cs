@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Transitions;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>Collides a transition with one placed physics model (retail CPhysicsPart + CGfxObj::find_obj_collisions).</summary>
 internal static class PartCollision

@@ -1,6 +1,9 @@
 using System;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>
 /// The physics half of a retail GfxObj: a physics BSP and the bounding sphere tested before it.

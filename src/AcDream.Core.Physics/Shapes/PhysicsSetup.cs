@@ -1,7 +1,9 @@
 using System;
 using System.Collections.Generic;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>One part of a setup: a physics model (or none) placed by a frame in the setup's space.</summary>
 public sealed class SetupPart

@@ -1,6 +1,7 @@
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>The kind of a collision shape.</summary>
 public enum ShadowShapeKind : byte

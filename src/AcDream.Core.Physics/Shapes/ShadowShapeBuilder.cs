@@ -1,7 +1,9 @@
 using System;
 using System.Collections.Generic;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>Turns a setup into the collision shapes that represent an object (the retail CPartArray's physics content).</summary>
 public static class ShadowShapeBuilder

@@ -1,7 +1,8 @@
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>
 /// What a transition learned about contact (retail COLLISIONINFO): the contact plane under the mover

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>How a sphere path is inserted into the world (retail InsertType).</summary>
 public enum InsertType

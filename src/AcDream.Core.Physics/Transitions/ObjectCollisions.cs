@@ -1,6 +1,10 @@
 using System;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>
 /// Collides a transition with the objects of one cell (retail CObjCell::find_obj_collisions and

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>The mover's description for one transition (retail OBJECTINFO).</summary>
 public sealed class ObjectInfo

@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>
 /// Storage for a mover's spheres without a heap array: retail movers have at most two

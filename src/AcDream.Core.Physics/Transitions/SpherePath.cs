@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>
 /// The moving spheres and every position along one transition (retail SPHEREPATH): where the mover

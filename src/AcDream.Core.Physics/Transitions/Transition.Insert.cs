@@ -1,6 +1,9 @@
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 public sealed partial class Transition
 {

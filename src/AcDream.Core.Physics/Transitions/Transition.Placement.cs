@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 public sealed partial class Transition
 {

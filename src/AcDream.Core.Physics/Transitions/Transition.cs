@@ -1,7 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>
 /// One move of one mover through the world (retail CTransition): the mover (<see cref="ObjectInfo"/>),

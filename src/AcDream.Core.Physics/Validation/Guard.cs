@@ -1,7 +1,8 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Validation;
 
 /// <summary>
 /// Input checks at the library's boundary. Each throws an <see cref="ArgumentException"/> naming the

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.Validation;
 
 /// <summary>
 /// The ranges every public entry point accepts, so that no arithmetic inside a query can overflow to

@@ -1,7 +1,10 @@
 using System;
 using System.Collections.Generic;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// A building standing in an outdoor cell (retail CBuildingObj): a shell model collided like an object

@@ -1,4 +1,5 @@
-namespace AcDream.Core.Physics;
+using AcDream.Core.Physics.Transitions;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// A cell of the world (retail CObjCell): an outdoor LandCell or an indoor

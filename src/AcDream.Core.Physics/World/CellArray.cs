@@ -1,6 +1,6 @@
 using System.Collections.Generic;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>The cells a sphere path touches (retail CELLARRAY): unique, in discovery order, reused without allocation.</summary>
 public sealed class CellArray

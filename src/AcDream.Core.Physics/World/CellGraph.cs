@@ -1,8 +1,11 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Transitions;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// All cells of the world by id, and the retail cell-list search (find_cell_list): which cells a set of

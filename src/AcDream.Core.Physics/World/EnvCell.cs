@@ -1,8 +1,12 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// An opening of an indoor cell (retail CCellPortal): a polygon in the cell's space and the cell on the

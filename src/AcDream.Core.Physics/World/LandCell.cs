@@ -1,6 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Transitions;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// An outdoor 24 m × 24 m cell of a landblock (retail CLandCell): two terrain triangles, and optionally

@@ -1,6 +1,7 @@
 using System;
+using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>What an object is, as far as the PvP, creature and missile rules of collision care.</summary>
 [Flags]

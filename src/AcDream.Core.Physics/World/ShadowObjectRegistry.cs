@@ -1,8 +1,11 @@
 using System;
 using System.Collections.Generic;
 using System.Runtime.InteropServices;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The objects of the world, as flat per-cell lists of <see cref="ShadowEntry"/> rows (retail shadow

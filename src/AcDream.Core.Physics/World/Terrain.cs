@@ -1,7 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics;
+namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// The terrain of one landblock: a 9×9 grid of heights (metres) at the corners of its 8×8 land cells,

@@ -1,5 +1,7 @@
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Apparatus;
 
@@ -9,7 +11,7 @@ public class CellTransitTests
     public void WalkingThroughTheDoorway_MovesTheMoverFromTheLandCellIntoTheEnvCell()
     {
         var world = Cottage.Build();
-        var player = Scenes.Player(world, 100, 107).WithLog();
+        var player = TestScenes.Player(world, 100, 107).WithLog();
         uint outdoor = player.State.Position.CellId;
         Assert.True(LandDefs.IsLandCell(outdoor));
         player.Walk(new Vector3(0, 0.1f, 0), 50); // to y = 112, two metres into the room
@@ -39,9 +41,9 @@ public class CellTransitTests
     public void TheShellBesideTheDoorway_BlocksFromOutside()
     {
         var world = Cottage.Build();
-        var player = Scenes.Player(world, 101.5f, 107);
+        var player = TestScenes.Player(world, 101.5f, 107);
         player.Walk(new Vector3(0, 0.1f, 0), 40);
-        Assert.True(player.Origin.Y <= 110f - 0.2f - Scenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
+        Assert.True(player.Origin.Y <= 110f - 0.2f - TestScenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
         Assert.True(LandDefs.IsLandCell(player.State.Position.CellId));
     }
 
@@ -52,7 +54,7 @@ public class CellTransitTests
         var start = new Position(Cottage.RoomId, new Vector3(100, 111, 0));
         var player = new Mover(world, MoverDescription.Player(), MoverState.OnFloor(start, 0f));
         player.Walk(new Vector3(0, 0.1f, 0), 40);
-        Assert.True(player.Origin.Y <= 114f - Scenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
+        Assert.True(player.Origin.Y <= 114f - TestScenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
         Assert.Equal(Cottage.RoomId, player.State.Position.CellId);
     }
 }

@@ -1,5 +1,8 @@
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Tests.Apparatus;
 
@@ -11,16 +14,16 @@ namespace AcDream.Core.Physics.Tests.Apparatus;
 public class DoorApparatusTests
 {
     private const float Eps = PhysicsConstants.Epsilon;
-    private static readonly float FrontStop = Scenes.DoorOrigin.Y + Scenes.SlabFront - Scenes.PlayerRadius;
-    private static readonly float BackStop = Scenes.DoorOrigin.Y + Scenes.SlabBack + Scenes.PlayerRadius;
+    private static readonly float FrontStop = TestScenes.DoorOrigin.Y + TestScenes.SlabFront - TestScenes.PlayerRadius;
+    private static readonly float BackStop = TestScenes.DoorOrigin.Y + TestScenes.SlabBack + TestScenes.PlayerRadius;
 
     [Theory]
     [InlineData(0x10008u)]
     [InlineData(0x10009u)]
     public void DeadCentre_FrontApproach_BlocksBeforeTheFace(uint state)
     {
-        var world = Scenes.Door((PhysicsState)state);
-        var player = Scenes.Player(world, 100, 98);
+        var world = TestScenes.Door((PhysicsState)state);
+        var player = TestScenes.Player(world, 100, 98);
         player.Walk(new Vector3(0, 0.1f, 0), 40);
         // Retail stops at the last sub-step before contact: the gap is less than one frame's motion.
         Assert.InRange(player.Origin.Y, FrontStop - 0.1f, FrontStop + Eps * 5);
@@ -31,8 +34,8 @@ public class DoorApparatusTests
     [Fact]
     public void DeadCentre_BackApproach_BlocksAfterTheBackFace()
     {
-        var world = Scenes.Door();
-        var player = Scenes.Player(world, 100, 102);
+        var world = TestScenes.Door();
+        var player = TestScenes.Player(world, 100, 102);
         player.Walk(new Vector3(0, -0.1f, 0), 40);
         // Retail stops at the last sub-step before contact: the gap is less than one frame's motion.
         Assert.InRange(player.Origin.Y, BackStop - Eps * 5, BackStop + 0.1f);
@@ -41,8 +44,8 @@ public class DoorApparatusTests
     [Fact]
     public void HalfMetreOffCentre_FrontApproach_Blocks()
     {
-        var world = Scenes.Door();
-        var player = Scenes.Player(world, 100.5f, 98);
+        var world = TestScenes.Door();
+        var player = TestScenes.Player(world, 100.5f, 98);
         player.Walk(new Vector3(0, 0.1f, 0), 40);
         Assert.True(player.Origin.Y <= FrontStop + Eps * 5, $"y = {player.Origin.Y}");
     }
@@ -50,8 +53,8 @@ public class DoorApparatusTests
     [Fact]
     public void OneLargeJumpThroughTheSlab_StillBlocks()
     {
-        var world = Scenes.Door();
-        var player = Scenes.Player(world, 100, 98);
+        var world = TestScenes.Door();
+        var player = TestScenes.Player(world, 100, 98);
         player.Step(new Vector3(0, 4f, 0));
         Assert.True(player.Origin.Y <= FrontStop + Eps * 5, $"y = {player.Origin.Y}: the mover tunnelled");
         Assert.True(player.Origin.Y > 98.5f, "sub-stepping should carry the mover up to the slab");
@@ -62,8 +65,8 @@ public class DoorApparatusTests
     [InlineData(-1f)]  // NW-ward along the face (the SE case mirrored for a front approach)
     public void DiagonalApproach_SlidesAlongTheFace_NeverStuck_NeverUsesTheCylinder(float sign)
     {
-        var world = Scenes.Door();
-        var player = Scenes.Player(world, 100 - sign * 0.4f, 99.0f).WithLog();
+        var world = TestScenes.Door();
+        var player = TestScenes.Player(world, 100 - sign * 0.4f, 99.0f).WithLog();
         var step = new Vector3(sign * 0.0707f, 0.0707f, 0);
         player.Walk(step, 30);
         foreach (var frame in player.Frames)
@@ -74,8 +77,8 @@ public class DoorApparatusTests
         Assert.DoesNotContain(player.Log!.Events, e => e.Kind == TransitionEventKind.ShapeTested && e.ShapeKind != ShadowShapeKind.Bsp);
         Assert.DoesNotContain(player.Log!.Events, e => e.Kind == TransitionEventKind.ObjectNormal && e.ShapeKind == ShadowShapeKind.Cylinder);
         Assert.Contains(player.Log!.Events, e => e.Kind == TransitionEventKind.ShapeSkipped && e.Reason == SkipReason.BspOnlyDispatch);
-        Assert.All(player.Frames, f => Assert.True(Scenes.SlabPenetration(f.After) <= Eps, $"penetrates the slab at {f.After}"));
-        Assert.True(MathF.Abs(player.Origin.X - 100) > Scenes.SlabHalfWidth + Scenes.PlayerRadius, "the slide carries the mover past the slab's edge");
+        Assert.All(player.Frames, f => Assert.True(TestScenes.SlabPenetration(f.After) <= Eps, $"penetrates the slab at {f.After}"));
+        Assert.True(MathF.Abs(player.Origin.X - 100) > TestScenes.SlabHalfWidth + TestScenes.PlayerRadius, "the slide carries the mover past the slab's edge");
     }
 
     /// <summary>
@@ -88,7 +91,7 @@ public class DoorApparatusTests
     [Fact]
     public void HeadingSweep_NeverStuckWhenTheTangentialPartExceedsTheRetailSlideThreshold()
     {
-        var world = Scenes.Door();
+        var world = TestScenes.Door();
         float threshold = MathF.Sqrt(PhysicsConstants.Epsilon);
         int stuckAboveThreshold = 0, stuckBelowThreshold = 0, runs = 0;
         foreach (float lateral in new[] { -0.45f, -0.2f, 0f, 0.2f, 0.45f })
@@ -97,12 +100,12 @@ public class DoorApparatusTests
                 if (heading == 0) continue; // dead-centre has no tangential part
                 float rad = heading * MathF.PI / 180f;
                 var step = new Vector3(MathF.Sin(rad), MathF.Cos(rad), 0) * 0.1f;
-                var player = Scenes.Player(world, 100 + lateral, 99.3f);
+                var player = TestScenes.Player(world, 100 + lateral, 99.3f);
                 player.Walk(step, 12);
                 runs++;
                 foreach (var f in player.Frames)
                 {
-                    Assert.True(Scenes.SlabPenetration(f.After) <= Eps, $"heading {heading}, lateral {lateral}: penetrates at {f.After}");
+                    Assert.True(TestScenes.SlabPenetration(f.After) <= Eps, $"heading {heading}, lateral {lateral}: penetrates at {f.After}");
                     if (Vector3.DistanceSquared(f.Before, f.After) >= 1e-10f)
                         continue;
                     if (MathF.Abs(step.X) > threshold) stuckAboveThreshold++;
@@ -123,21 +126,21 @@ public class DoorApparatusTests
     [Fact]
     public void BitCleared_DoorCollidesThroughItsCylinder_AndTheLowCylinderIsSteppedOnto()
     {
-        var world = Scenes.Door((PhysicsState)0x00008, registerShapesOnly: true);
-        var player = Scenes.Player(world, 100, 98).WithLog();
+        var world = TestScenes.Door((PhysicsState)0x00008, registerShapesOnly: true);
+        var player = TestScenes.Player(world, 100, 98).WithLog();
         player.Walk(new Vector3(0, 0.1f, 0), 40);
         Assert.Contains(player.Log!.Events, e => e.Kind == TransitionEventKind.ShapeTested && e.ShapeKind == ShadowShapeKind.Cylinder);
         Assert.DoesNotContain(player.Log!.Events, e => e.Kind == TransitionEventKind.ShapeTested && e.ShapeKind == ShadowShapeKind.Bsp);
         Assert.Contains(player.Frames, f => MathF.Abs(f.After.Z - (0.2f + 0.005f)) < 0.01f);
-        Assert.True(player.Origin.Y > Scenes.DoorOrigin.Y + Scenes.SlabBack, "nothing tests the slab, so the player passes it");
+        Assert.True(player.Origin.Y > TestScenes.DoorOrigin.Y + TestScenes.SlabBack, "nothing tests the slab, so the player passes it");
     }
 
     [Fact]
     public void Transition_AllocatesNothing_InSteadyState()
     {
-        var world = Scenes.Door();
+        var world = TestScenes.Door();
         var engine = new PhysicsEngine(world);
-        var mover = Scenes.SeedPlayer();
+        var mover = TestScenes.SeedPlayer();
         var state = MoverState.OnFloor(TestGeometry.At(100.3f, 99.3f, 0), 0f);
         var target = state.Position;
         target.Frame.Origin += new Vector3(0.07f, 0.07f, 0);
@@ -157,8 +160,8 @@ public class DoorApparatusTests
     [Fact]
     public void BlockedFrames_AskForTheVelocityToBeKilled_FreeFramesDoNot()
     {
-        var world = Scenes.Door();
-        var player = Scenes.Player(world, 100, 98);
+        var world = TestScenes.Door();
+        var player = TestScenes.Player(world, 100, 98);
         player.Walk(new Vector3(0, 0.1f, 0), 20);
         Assert.False(player.Frames[0].Result.VelocityKilled);
         Assert.Contains(player.Frames, f => f.Result.VelocityKilled && f.After == f.Before);

@@ -1,5 +1,7 @@
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Tests.Apparatus;
 
@@ -28,7 +30,7 @@ public class StepAndEdgeTests
     [Fact]
     public void Ledge_0_3m_IsSteppedUp()
     {
-        var player = Scenes.Player(Platform(0.3f), 100, 100, Climber());
+        var player = TestScenes.Player(Platform(0.3f), 100, 100, Climber());
         player.Walk(new Vector3(0, 0.1f, 0), 40);
         Assert.True(player.Origin.Y > 103f, $"the player should walk onto the platform, y = {player.Origin.Y}");
         Assert.InRange(player.Origin.Z, 0.3f, 0.3f + 0.01f);
@@ -44,7 +46,7 @@ public class StepAndEdgeTests
     [Fact]
     public void Ledge_0_7m_IsClimbed_TheRetailStepAllowanceIsOneAndAHalfStepHeights()
     {
-        var player = Scenes.Player(Platform(0.7f), 100, 100, Climber());
+        var player = TestScenes.Player(Platform(0.7f), 100, 100, Climber());
         player.Walk(new Vector3(0, 0.1f, 0), 40);
         Assert.InRange(player.Origin.Z, 0.7f, 0.71f);
     }
@@ -52,9 +54,9 @@ public class StepAndEdgeTests
     [Fact]
     public void Ledge_1m_Blocks()
     {
-        var player = Scenes.Player(Platform(1.0f), 100, 100, Climber());
+        var player = TestScenes.Player(Platform(1.0f), 100, 100, Climber());
         player.Walk(new Vector3(0, 0.1f, 0), 40);
-        Assert.True(player.Origin.Y <= 102f - Scenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
+        Assert.True(player.Origin.Y <= 102f - TestScenes.PlayerRadius + PhysicsConstants.Epsilon * 5, $"y = {player.Origin.Y}");
         Assert.InRange(player.Origin.Z, 0f, 0.01f);
     }
 
@@ -62,7 +64,7 @@ public class StepAndEdgeTests
     {
         var world = Platform(1f);
         var start = TestGeometry.At(100, 104, 1f);
-        return new Mover(world, description ?? Scenes.SeedPlayer(), MoverState.OnFloor(start, 1f));
+        return new Mover(world, description ?? TestScenes.SeedPlayer(), MoverState.OnFloor(start, 1f));
     }
 
     [Fact]

@@ -1,4 +1,8 @@
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

@@ -1,5 +1,7 @@
 using AcDream.Core.Physics;
 using static AcDream.Core.Physics.Tests.Bsp.BspTestKit;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

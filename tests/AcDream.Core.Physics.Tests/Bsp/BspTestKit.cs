@@ -1,4 +1,7 @@
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

@@ -1,5 +1,7 @@
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

@@ -1,4 +1,5 @@
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Tests.Geometry;
 

@@ -2,6 +2,10 @@ using System.IO;
 using System.Diagnostics;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Robustness;
 
@@ -26,7 +30,7 @@ public class BadInputTests
 
         public Fixture()
         {
-            World.Objects.Register(Scenes.DoorId, TestGeometry.DoorSetup(), TestGeometry.At(100, 100, 0), 1f, PhysicsState.ReportCollisions);
+            World.Objects.Register(TestScenes.DoorId, TestGeometry.DoorSetup(), TestGeometry.At(100, 100, 0), 1f, PhysicsState.ReportCollisions);
             World.Objects.Register(2, Ball(0.5f), TestGeometry.At(12, 12, 0));
             World.Cells.AddEnvCell(new EnvCell(EnvCellId, new Frame(new Vector3(50, 50, -20)), null, CellBox()));
         }

@@ -2,6 +2,9 @@ using System.IO;
 using System.Text.Json.Nodes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.SceneFiles;
 
@@ -114,7 +117,7 @@ public class ReplayTests
     public void TheJsonDoor_BehavesLikeTheHandBuiltDoor()
     {
         var scene = SceneLibrary.Load("door");
-        var player = Support.Scenes.SeedPlayer();
+        var player = Support.TestScenes.SeedPlayer();
         var trajectory = SceneRunner.Run(scene);
         Assert.Equal(scene.Movers.Count, trajectory.Movers.Count);
         for (int m = 0; m < scene.Movers.Count; m++)
@@ -128,8 +131,8 @@ public class ReplayTests
             Assert.Equal(player.Flags, sm.Description.Flags);
 
             var start = sm.Start.Position.Origin;
-            var world = Support.Scenes.Door();
-            var mover = Support.Scenes.Player(world, start.X, start.Y);
+            var world = Support.TestScenes.Door();
+            var mover = Support.TestScenes.Player(world, start.X, start.Y);
             Assert.Equal(sm.Start.Position.CellId, mover.State.Position.CellId);
             for (int f = 0; f < sm.FrameCount; f++)
             {
@@ -154,7 +157,7 @@ public class ReplayTests
     public void TheJsonDoor_HasTheHandBuiltDoorsGeometry()
     {
         var json = SceneLibrary.Load("door").World.Objects.RowsInCell(0xA9B40025).ToArray();
-        var hand = Support.Scenes.Door().Objects.RowsInCell(0xA9B40025).ToArray();
+        var hand = Support.TestScenes.Door().Objects.RowsInCell(0xA9B40025).ToArray();
         Assert.Equal(hand.Length, json.Length);
         for (int i = 0; i < hand.Length; i++)
         {

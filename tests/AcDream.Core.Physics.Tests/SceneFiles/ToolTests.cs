@@ -1,6 +1,7 @@
 using System.IO;
 using AcDream.Core.Physics;
 using ToolProgram = AcDream.Core.Physics.Tool.Program;
+using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.SceneFiles;
 

@@ -1,5 +1,8 @@
 using AcDream.Core.Physics;
 using static AcDream.Core.Physics.Tests.Shapes.ShapeTestRig;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Tests.Shapes;
 

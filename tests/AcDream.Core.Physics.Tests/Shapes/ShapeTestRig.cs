@@ -1,4 +1,6 @@
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Tests.Shapes;
 

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.World;
 namespace AcDream.Core.Physics;
 
 /// <summary>Everything a transition collides with: the cells and the objects registered in them.</summary>

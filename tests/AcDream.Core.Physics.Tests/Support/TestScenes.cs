@@ -1,9 +1,10 @@
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Tests.Support;
 
 /// <summary>Minimal scenes for apparatus tests: each holds only what its behaviour needs.</summary>
-internal static class Scenes
+internal static class TestScenes
 {
     public const uint DoorId = Bench.DoorScene.DoorId;
     public static readonly Vector3 DoorOrigin = Bench.DoorScene.DoorOrigin;
