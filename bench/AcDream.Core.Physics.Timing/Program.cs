@@ -11,7 +11,8 @@ namespace AcDream.Core.Physics.Timing;
 /// The timing driver behind bench/compare.sh (wall-clock ratios, and instruction counts with --callgrind):
 /// <c>list</c> prints the workloads (name, transitions per run, description); <c>time [--rounds N] [--ms N] [NAME...]</c> prints, per workload, the
 /// fastest sample's nanoseconds and the bytes allocated per transition; <c>count NAME N</c> resolves a
-/// workload 20 times, then N times between two marks for callgrind (see <see cref="Mark"/>).
+/// workload 20 times, then N times between two marks for callgrind (see <see cref="Mark"/>);
+/// <c>fingerprint</c> prints a hash of every result on a grid of approaches (see <see cref="Workload.Fingerprint"/>).
 /// </summary>
 public static class Program
 {
@@ -39,6 +40,9 @@ public static class Program
                 Mark();
                 Console.WriteLine($"{one.Name}: {n} runs, {n * (long)one.Frames} transitions, checksum {sum.ToString("R", CultureInfo.InvariantCulture)}");
                 return 0;
+            case "fingerprint":
+                Console.WriteLine($"fingerprint {Workload.Fingerprint():X16}");
+                return 0;
             case "time":
                 return Time(workloads, args.Skip(1).ToArray());
             default:
@@ -61,7 +65,7 @@ public static class Program
 
     private static int Usage(string message)
     {
-        Console.Error.WriteLine($"timing: {message}. Usage: list | time [--rounds N] [--ms N] [NAME...] | count NAME N");
+        Console.Error.WriteLine($"timing: {message}. Usage: list | time [--rounds N] [--ms N] [NAME...] | count NAME N | fingerprint");
         return 2;
     }
 

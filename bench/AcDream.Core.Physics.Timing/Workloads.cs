@@ -89,6 +89,61 @@ internal sealed class Workload
             Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
     ];
 
+    /// <summary>
+    /// A fingerprint of the engine's results: FNV-1a over every field of every frame's result on a grid of
+    /// approaches to the door (headings −85°..85° every 5°, seven lateral offsets, 1–50 m/s at 30 Hz, 60
+    /// frames each, so the fast ones run on through the props) in the door world with 100 props in the
+    /// door's cell and 300 elsewhere. Equal fingerprints: bit-identical results on all of them.
+    /// </summary>
+    public static ulong Fingerprint()
+    {
+        var engine = new PhysicsEngine(DoorWorld(100, 300));
+        var player = MoverDescription.Player();
+        ulong h = 14695981039346656037UL;
+        void Add(uint x)
+        {
+            for (int i = 0; i < 4; i++)
+            {
+                h ^= (byte)(x >> (8 * i));
+                h *= 1099511628211UL;
+            }
+        }
+        void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
+        void AddV(Vector3 v) { AddF(v.X); AddF(v.Y); AddF(v.Z); }
+        foreach (float lateral in new[] { -0.7f, -0.45f, -0.2f, 0f, 0.2f, 0.45f, 0.7f })
+            for (int heading = -85; heading <= 85; heading += 5)
+                foreach (float speed in new[] { 1f, 2f, 5f, 10f, 20f, 50f })
+                {
+                    float a = heading * MathF.PI / 180f;
+                    var dir = new Vector3(MathF.Sin(a), MathF.Cos(a), 0);
+                    var state = Standing(100f + lateral - 2f * dir.X, FrontStop - 2f * dir.Y);
+                    var step = dir * (speed / 30f);
+                    for (int f = 0; f < 60; f++)
+                    {
+                        var target = state.Position;
+                        target.Frame.Origin += step;
+                        var r = engine.Resolve(player, state, target);
+                        var n = r.Next;
+                        Add(n.Position.CellId);
+                        AddV(n.Position.Frame.Origin);
+                        AddF(n.Position.Frame.Orientation.W);
+                        AddF(n.Position.Frame.Orientation.Z);
+                        Add((uint)((r.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
+                            | (r.CollisionNormalValid ? 16 : 0) | (r.CollidedWithEnvironment ? 32 : 0) | (r.VelocityKilled ? 64 : 0)));
+                        AddV(n.ContactPlane.Normal);
+                        AddF(n.ContactPlane.D);
+                        Add(n.ContactPlaneCellId);
+                        AddV(n.SlidingNormal);
+                        AddV(r.CollisionNormal);
+                        Add(r.LastCollidedObject);
+                        foreach (uint id in r.CollidedObjects.Span)
+                            Add(id);
+                        state = n;
+                    }
+                }
+        return h;
+    }
+
     private static MoverState Standing(float x, float y)
     {
         var p = new Vector3(x, y, 0);
