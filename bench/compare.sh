@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Measures the work tree against another commit in one run, on the same machine at the same time.
 #
-#   bench/compare.sh BASE [PAIRS] [WORKLOAD...]              wall-clock ratios
-#   bench/compare.sh --callgrind BASE [TRANSITIONS] [WORKLOAD...]   instruction counts (valgrind)
+#   bench/compare.sh [--head COMMIT] BASE [PAIRS] [WORKLOAD...]                    wall-clock ratios
+#   bench/compare.sh [--head COMMIT] --callgrind BASE [TRANSITIONS] [WORKLOAD...]  instruction counts
 #
 # Builds the timing driver (bench/AcDream.Core.Physics.Timing, copied as it is in the work tree) once
-# against BASE's library, in a temporary git worktree, and once against the work tree's library.
+# against BASE's library, in a temporary git worktree, and once against the work tree's library (or,
+# with --head, against COMMIT's, in a second temporary worktree).
 #
 # Wall clock: runs the two builds alternately PAIRS times (default 5; the order swaps every pair) and
 # prints, per workload, the median over the runs of each build's fastest sample (ns per transition), the
@@ -18,6 +19,8 @@
 # code that the wall-clock runs measure. Default workloads: head-on and slide-ne.
 set -euo pipefail
 callgrind=0
+head_commit=
+if [ "${1:-}" = "--head" ]; then head_commit=${2:?--head needs a commit}; shift 2; fi
 if [ "${1:-}" = "--callgrind" ]; then callgrind=1; shift; fi
 base=${1:?usage: bench/compare.sh [--callgrind] BASE [PAIRS | TRANSITIONS] [WORKLOAD...]}
 count=${2:-}
@@ -27,21 +30,41 @@ driver=bench/AcDream.Core.Physics.Timing
 tmp=$(mktemp -d)
 cleanup() {
   git -C "$root" worktree remove --force "$tmp/base" >/dev/null 2>&1 || true
+  git -C "$root" worktree remove --force "$tmp/head" >/dev/null 2>&1 || true
   rm -rf "$tmp"
 }
 trap cleanup EXIT
 
-git -C "$root" worktree add --detach "$tmp/base" "$base" >/dev/null 2>&1
-rm -rf "${tmp:?}/base/$driver"
-mkdir -p "$tmp/base/$driver"
-(cd "$root/$driver" && cp ./*.cs ./*.csproj "$tmp/base/$driver/")
-echo "building the driver against $(git -C "$root" rev-parse --short "$base") and against the work tree" >&2
-dotnet build -c Release "$tmp/base/$driver" -o "$tmp/out-base" -v q -nologo >"$tmp/build-base.log" 2>&1 || { cat "$tmp/build-base.log" >&2; exit 1; }
-dotnet build -c Release "$root/$driver" -o "$tmp/out-head" -v q -nologo >"$tmp/build-head.log" 2>&1 || { cat "$tmp/build-head.log" >&2; exit 1; }
+checkout() { # side commit: a temporary worktree of the commit, with the work tree's driver
+  git -C "$root" worktree add --detach "$tmp/$1" "$2" >/dev/null 2>&1
+  rm -rf "${tmp:?}/$1/$driver"
+  mkdir -p "$tmp/$1/$driver"
+  (cd "$root/$driver" && cp ./*.cs ./*.csproj "$tmp/$1/$driver/")
+}
+build() { # side source-root
+  dotnet build -c Release "$2/$driver" -o "$tmp/out-$1" -v q -nologo >"$tmp/build-$1.log" 2>&1 || { cat "$tmp/build-$1.log" >&2; exit 1; }
+}
+checkout base "$base"
+echo "building the driver against $(git -C "$root" rev-parse --short "$base") and against ${head_commit:-the work tree}" >&2
+build base "$tmp/base"
+if [ -n "$head_commit" ]; then
+  checkout head "$head_commit"
+  build head "$tmp/head"
+else
+  build head "$root"
+fi
 
 dll=AcDream.Core.Physics.Timing.dll
 machine="machine: $(nproc) cores, $(uname -m), $(dotnet --list-runtimes | awk '/NETCore.App/ {v=$2} END {print ".NET " v}'), load average $(cut -d' ' -f1-3 /proc/loadavg)"
-head_label="work tree on $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src || echo ' (with changes)')"
+if [ -n "$head_commit" ]; then
+  head_label="now $(git -C "$root" rev-parse --short "$head_commit")"
+else
+  head_label="now: work tree on $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src || echo ' (with changes)')"
+fi
+
+fp_base=$(dotnet "$tmp/out-base/$dll" fingerprint | awk '{print $2}')
+fp_head=$(dotnet "$tmp/out-head/$dll" fingerprint | awk '{print $2}')
+fingerprints="fingerprint (every result on the driver's approach grid): base $fp_base, now $fp_head, $([ "$fp_base" = "$fp_head" ] && echo "bit-identical" || echo "DIFFERENT")"
 
 if ((callgrind)); then
   transitions=${count:-2000}
@@ -54,6 +77,7 @@ if ((callgrind)); then
   }
   echo "base $(git -C "$root" rev-parse --short "$base"), $head_label; instructions per transition (callgrind, DOTNET_TieredCompilation=0)"
   echo "$machine"
+  echo "$fingerprints"
   printf '%-14s %12s %12s %7s\n' workload "base Ir" "now Ir" ratio
   for w in "$@"; do
     frames=$(dotnet "$tmp/out-head/$dll" list | awk -v w="$w" '$1 == w { print $2 }')
@@ -79,6 +103,7 @@ done
 
 echo "base $(git -C "$root" rev-parse --short "$base"), $head_label; $pairs runs each, median of each run's fastest sample"
 echo "$machine"
+echo "$fingerprints"
 printf '%-14s %12s %12s %9s %9s %7s\n' workload "base ns" "now ns" "base B" "now B" ratio
 awk '{ key = $2; n[$1, key]++; v[$1, key, n[$1, key]] = $3; b[$1, key] = $4; if (!(key in seen)) { seen[key] = 1; order[++k] = key } }
 function median(side, key,   i, j, m, t, a) {
