@@ -53,20 +53,21 @@ public sealed class PhysicsEngine
     public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        Guard.Frame(state.Position.Frame, "state.position");
-        Guard.Frame(target.Frame, "target");
         var begin = state.Position;
-        begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
-        target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
+        Guard.Pose(ref begin.Frame, "state.position");
+        Guard.Pose(ref target.Frame, "target");
+        // The cell ids are usually one and the same: look each distinct id up once.
         var cells = _transition.World.Cells;
         var cell = cells.GetRequired(begin.CellId, "state.position.cell");
-        cells.GetRequired(target.CellId, "target.cell");
+        if (target.CellId != begin.CellId)
+            cells.GetRequired(target.CellId, "target.cell");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
             Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
             Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
-            if (state.ContactPlaneCellId != 0)
-                cells.GetRequired(state.ContactPlaneCellId, "state.contactPlaneCellId");
+            uint planeCell = state.ContactPlaneCellId;
+            if (planeCell != 0 && planeCell != begin.CellId && planeCell != target.CellId)
+                cells.GetRequired(planeCell, "state.contactPlaneCellId");
         }
         if (state.SlidingNormalValid)
             Guard.Finite(state.SlidingNormal, "state.slidingNormal");
@@ -87,8 +88,7 @@ public sealed class PhysicsEngine
     public MoveResult Place(MoverDescription mover, Position position)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        Guard.Frame(position.Frame, "position");
-        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
+        Guard.Pose(ref position.Frame, "position");
         var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
         var t = _transition;
         var airborne = MoverState.Airborne(position);
