@@ -25,6 +25,9 @@ public sealed class LandCell : Cell
         (_first, _second) = terrain.CellTriangles(x, y);
     }
 
+    /// <summary>The cell's two terrain triangles (landblock-local), for the world queries.</summary>
+    internal (Polygon First, Polygon Second) Triangles => (_first, _second);
+
     /// <summary>The building standing in this cell, or null.</summary>
     public Building? Building { get; internal set; }
 
