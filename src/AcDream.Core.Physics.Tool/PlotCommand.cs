@@ -3,11 +3,8 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.Transitions;
-using AcDream.Core.Physics.World;
 using ScottPlot;
 
 namespace AcDream.Core.Physics.Tool;
@@ -122,103 +119,68 @@ internal static class PlotCommand
 
     private static void DrawWorld(PhysicsWorld world, uint frameCell, Vector3 min, Vector3 max, Plot top, Plot side, bool alongX)
     {
-        // Land-cell borders inside the region.
+        // Land-cell borders inside the region, and the ground level when there is terrain.
         const float size = PhysicsConstants.LandCellLength;
         for (float x = MathF.Ceiling(min.X / size) * size; x <= max.X; x += size)
             top.Add.VerticalLine(x, 1, Colors.LightGray, LinePattern.Dotted);
         for (float y = MathF.Ceiling(min.Y / size) * size; y <= max.Y; y += size)
             top.Add.HorizontalLine(y, 1, Colors.LightGray, LinePattern.Dotted);
-        bool anyTerrain = false;
-
-        var drawn = new HashSet<(uint, ShadowShapeKind, int)>();
-        foreach (uint id in world.Cells.CellIds)
-        {
-            var cell = world.Cells.Get(id);
-            var shift = LandDefs.BlockOffset(frameCell, id);
-            if (cell is EnvCell { PhysicsBsp: { } bsp } env)
-                DrawTree(bsp, env.Position.Frame, shift, 1f, CellColor, LinePattern.Solid, top, side, alongX, min, max);
-            if (cell is LandCell land)
-            {
-                anyTerrain = true;
-                if (land.Building is { } building)
-                    DrawTree(building.Shell.Bsp, building.Position.Frame, shift, 1f, BuildingColor, LinePattern.Solid, top, side, alongX, min, max);
-            }
-            foreach (var row in world.Objects.RowsInCell(id))
-                if (drawn.Add((row.EntityId, row.Kind, row.Shape.Index)))
-                    DrawShape(row, frameCell, top, side, alongX, min, max);
-        }
-        if (anyTerrain)
+        if (world.Cells.CellIds.Any(LandDefs.IsLandCell))
             side.Add.HorizontalLine(0, 1, Colors.LightGray, LinePattern.Dotted);
-    }
 
-    /// <summary>An object's shape: solid when it is the shape the object collides by (its dispatch rung), dashed otherwise.</summary>
-    private static void DrawShape(in ShadowEntry row, uint frameCell, Plot top, Plot side, bool alongX, Vector3 min, Vector3 max)
-    {
-        var rung = ObjectCollisions.BspOnlyDispatch(row.State, false, false) ? ShadowShapeKind.Bsp
-            : row.CylSphereCount > 0 ? ShadowShapeKind.Cylinder : ShadowShapeKind.Sphere;
-        var pattern = row.Kind == rung ? LinePattern.Solid : LinePattern.Dashed;
-        var shift = LandDefs.BlockOffset(frameCell, row.Position.CellId);
-        var shape = row.Shape;
-        switch (shape.Kind)
+        foreach (var shape in WorldOutline.Collect(world, frameCell))
         {
-            case ShadowShapeKind.Bsp:
-                DrawTree(shape.Model!.Bsp, row.Position.Frame.Combine(shape.PartFrame), shift, shape.ModelScale, ObjectColor, pattern, top, side, alongX, min, max);
-                break;
-            case ShadowShapeKind.Cylinder:
+            var color = shape.Source switch { OutlineSource.EnvCell => CellColor, OutlineSource.Building => BuildingColor, _ => ObjectColor };
+            // An object's shape that its dispatch rung never collides with (a door's foot cylinder) is dashed.
+            var pattern = shape.Collides ? LinePattern.Solid : LinePattern.Dashed;
+            switch (shape.Form)
             {
-                var c = shape.Cylinder;
-                var low = row.Position.LocalToGlobal(c.LowPoint) + shift;
-                Outline(top.Add.Circle(low.X, low.Y, c.Radius), pattern);
-                double h = alongX ? low.X : low.Y;
-                Outline(side.Add.Rectangle(h - c.Radius, h + c.Radius, low.Z, low.Z + c.Height), pattern);
-                break;
-            }
-            default:
-            {
-                var s = shape.Sphere;
-                var centre = row.Position.LocalToGlobal(s.Center) + shift;
-                Outline(top.Add.Circle(centre.X, centre.Y, s.Radius), pattern);
-                Outline(side.Add.Circle(alongX ? centre.X : centre.Y, centre.Z, s.Radius), pattern);
-                break;
+                case OutlineForm.Polygon:
+                    DrawPolygon(shape.Vertices, color, pattern, top, side, alongX, min, max);
+                    break;
+                case OutlineForm.Cylinder:
+                    var low = shape.Center;
+                    double h = alongX ? low.X : low.Y;
+                    Outline(top.Add.Circle(low.X, low.Y, shape.Radius), color, pattern);
+                    Outline(side.Add.Rectangle(h - shape.Radius, h + shape.Radius, low.Z, low.Z + shape.Height), color, pattern);
+                    break;
+                default:
+                    var c = shape.Center;
+                    Outline(top.Add.Circle(c.X, c.Y, shape.Radius), color, pattern);
+                    Outline(side.Add.Circle(alongX ? c.X : c.Y, c.Z, shape.Radius), color, pattern);
+                    break;
             }
         }
     }
 
-    private static void Outline(IHasLine shape, LinePattern pattern)
+    private static void Outline(IHasLine shape, Color color, LinePattern pattern)
     {
-        shape.LineColor = ObjectColor;
+        shape.LineColor = color;
         shape.LineWidth = 1.5f;
         shape.LinePattern = pattern;
         if (shape is IHasFill fill)
             fill.FillColor = Colors.Transparent;
     }
 
-    /// <summary>Every polygon of a placed tree, as an outline in both views (polygons wholly outside the region are left out).</summary>
-    private static void DrawTree(Bsp.BspTree tree, in Frame frame, Vector3 shift, float scale, Color color, LinePattern pattern,
-        Plot top, Plot side, bool alongX, Vector3 min, Vector3 max)
+    /// <summary>A polygon's outline in both views (left out when it lies wholly outside the region).</summary>
+    private static void DrawPolygon(ReadOnlySpan<Vector3> v, Color color, LinePattern pattern, Plot top, Plot side, bool alongX, Vector3 min, Vector3 max)
     {
-        foreach (var polygon in tree.Polygons)
+        var xs = new double[v.Length + 1];
+        var ys = new double[v.Length + 1];
+        var hs = new double[v.Length + 1];
+        var zs = new double[v.Length + 1];
+        bool inside = false;
+        for (int i = 0; i <= v.Length; i++)
         {
-            var v = polygon.Vertices;
-            var xs = new double[v.Length + 1];
-            var ys = new double[v.Length + 1];
-            var hs = new double[v.Length + 1];
-            var zs = new double[v.Length + 1];
-            bool inside = false;
-            for (int i = 0; i <= v.Length; i++)
-            {
-                var p = frame.LocalToGlobal(v[i % v.Length] * scale) + shift;
-                (xs[i], ys[i], zs[i]) = (p.X, p.Y, p.Z);
-                hs[i] = alongX ? p.X : p.Y;
-                inside |= p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y;
-            }
-            if (!inside)
-                continue;
-            Line(top.Add.Scatter(xs, ys), color, pattern);
-            // Side view: walls seen edge-on would draw as lines; only faces turned towards the viewer or up
-            // show their shape, which is all the outline needs.
-            Line(side.Add.Scatter(hs, zs), color, pattern);
+            var p = v[i % v.Length];
+            (xs[i], ys[i], zs[i]) = (p.X, p.Y, p.Z);
+            hs[i] = alongX ? p.X : p.Y;
+            inside |= p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y;
         }
+        if (!inside)
+            return;
+        Line(top.Add.Scatter(xs, ys), color, pattern);
+        Line(side.Add.Scatter(hs, zs), color, pattern);
     }
 
     private static void Line(ScottPlot.Plottables.Scatter s, Color color, LinePattern pattern)

@@ -5,7 +5,7 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Retail transitional_insert: inserts the check position into its cell and the other cells it
