@@ -64,7 +64,6 @@ public static class ObjectCollisions
     {
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             return TransitionState.OK;
-        uint self = transition.ObjectInfo.ObjectId;
         int start = 0;
         while (start < rows.Length)
         {
@@ -72,15 +71,34 @@ public static class ObjectCollisions
             int end = start + 1;
             while (end < rows.Length && rows[end].EntityId == id)
                 end++;
-            if (id != self || self == 0)
-            {
-                var state = FindObjectCollisions(transition, rows.Slice(start, end - start));
-                if (state != TransitionState.OK)
-                    return state;
-            }
+            var state = FindObjectCollisionsUnlessSelf(transition, rows.Slice(start, end - start));
+            if (state != TransitionState.OK)
+                return state;
             start = end;
         }
         return TransitionState.OK;
+    }
+
+    /// <summary>As <see cref="FindInCell(Transition, ReadOnlySpan{ShadowEntry})"/>, over the registry's list of a cell's objects.</summary>
+    internal static TransitionState FindInCell(Transition transition, ShadowObjectRegistry.CellObjects objects)
+    {
+        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
+            return TransitionState.OK;
+        for (int i = 0; i < objects.Count; i++)
+        {
+            var state = FindObjectCollisionsUnlessSelf(transition, objects.RowsOf(i));
+            if (state != TransitionState.OK)
+                return state;
+        }
+        return TransitionState.OK;
+    }
+
+    private static TransitionState FindObjectCollisionsUnlessSelf(Transition transition, ReadOnlySpan<ShadowEntry> shapes)
+    {
+        uint self = transition.ObjectInfo.ObjectId;
+        if (shapes.Length == 0 || (shapes[0].EntityId == self && self != 0))
+            return TransitionState.OK;
+        return FindObjectCollisions(transition, shapes);
     }
 
     /// <summary>One object (all its rows): the retail ladder BSP-only → cylspheres → spheres → nothing.</summary>

@@ -161,6 +161,18 @@ internal static class Guard
         }
     }
 
+    /// <summary>True when <see cref="Frame(in Physics.Frame, string)"/> and <see cref="Rotation"/> would accept the frame (no allocation).</summary>
+    public static bool IsValidFrame(in Frame frame)
+    {
+        var o = frame.Origin;
+        var q = frame.Orientation;
+        if (!(MathF.Abs(o.X) <= InputLimits.MaxCoordinate) || !(MathF.Abs(o.Y) <= InputLimits.MaxCoordinate)
+            || !(MathF.Abs(o.Z) <= InputLimits.MaxCoordinate))
+            return false;
+        float length = q.Length();
+        return length >= 1e-6f && float.IsFinite(length);
+    }
+
     public static void Frame(in Frame frame, string field)
     {
         Finite(frame.Origin, field, ".origin");
