@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Transitions;
 /// Collides a transition with the objects of one cell (retail CObjCell::find_obj_collisions and
 /// CPhysicsObj::find_obj_collisions), through the retail dispatch ladder.
 /// </summary>
-public static class ObjectCollisions
+internal static class ObjectCollisions
 {
     /// <summary>
     /// Retail's binary choice on HAS_PHYSICS_BSP_PS (acclient CPhysicsObj::FindObjCollisions; ACE
@@ -56,30 +56,10 @@ public static class ObjectCollisions
     }
 
     /// <summary>
-    /// Collides with every object in a cell's rows, in list order (retail CObjCell::find_obj_collisions
+    /// Collides with every object listed in a cell, in list order (retail CObjCell::find_obj_collisions
     /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
-    /// non-OK result returns. Rows of one object are contiguous. An initial placement tests no object.
+    /// non-OK result returns. An initial placement tests no object.
     /// </summary>
-    public static TransitionState FindInCell(Transition transition, ReadOnlySpan<ShadowEntry> rows)
-    {
-        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
-            return TransitionState.OK;
-        int start = 0;
-        while (start < rows.Length)
-        {
-            uint id = rows[start].EntityId;
-            int end = start + 1;
-            while (end < rows.Length && rows[end].EntityId == id)
-                end++;
-            var state = FindObjectCollisionsUnlessSelf(transition, rows.Slice(start, end - start));
-            if (state != TransitionState.OK)
-                return state;
-            start = end;
-        }
-        return TransitionState.OK;
-    }
-
-    /// <summary>As <see cref="FindInCell(Transition, ReadOnlySpan{ShadowEntry})"/>, over the registry's list of a cell's objects.</summary>
     internal static TransitionState FindInCell(Transition transition, ShadowObjectRegistry.CellObjects objects)
     {
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)

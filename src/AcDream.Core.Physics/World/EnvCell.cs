@@ -81,7 +81,7 @@ public sealed class EnvCell : Cell
     public bool ContainsPoint(Vector3 point) => BspQuery.PointInsideCellBsp(CellBsp, Position.Frame.GlobalToLocal(point));
 
     /// <summary>Retail sphere_intersects_cell for a landblock-local sphere.</summary>
-    public BoundingType IntersectsSphere(in Sphere sphere) =>
+    internal BoundingType IntersectsSphere(in Sphere sphere) =>
         BspQuery.SphereIntersectsCellBsp(CellBsp, new Sphere(Position.Frame.GlobalToLocal(sphere.Center), sphere.Radius));
 
     /// <summary>
@@ -96,7 +96,7 @@ public sealed class EnvCell : Cell
     }
 
     /// <inheritdoc />
-    public override TransitionState FindEnvCollisions(Transition transition)
+    internal override TransitionState FindEnvCollisions(Transition transition)
     {
         var path = transition.SpherePath;
         path.ObstructionEthereal = false;

@@ -67,7 +67,7 @@ public sealed class ShadowObjectRegistry
     }
 
     /// <summary>Registers an object from shapes already built by <see cref="ShadowShapeBuilder.FromSetup"/>.</summary>
-    public void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
+    internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
     {
         ArgumentNullException.ThrowIfNull(shapes);
         string name = $"object 0x{entityId:X8}";
@@ -138,7 +138,7 @@ public sealed class ShadowObjectRegistry
     /// The rows of a cell's objects, in the order they are tested (empty for a cell with no objects): rows of
     /// one object are contiguous. Builds a new array: for inspection and tests, not for the per-frame path.
     /// </summary>
-    public ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId)
+    internal ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId)
     {
         if (!_byCell.TryGetValue(cellId, out var slots) || slots.Count == 0)
             return ReadOnlySpan<ShadowEntry>.Empty;
