@@ -185,14 +185,15 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
+        var matrix = CurPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
-            GlobalCurrCenter[i].Center = CurPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalCurrCenter[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin);
             GlobalCurrCenter[i].Radius = LocalSphere[i].Radius;
         }
         // Retail sets the check position to the current one right after this (init_path, and accepting a
         // sub-step); remember what was computed so that CacheGlobalSphere can copy it instead.
-        _currLowPoint = CurPos.LocalToGlobal(LocalLowPoint);
+        _currLowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
         _currCentersFor = CurPos;
         _currCentersValid = true;
     }
@@ -208,12 +209,13 @@ internal sealed class SpherePath
             GlobalLowPoint = _currLowPoint;
             return;
         }
+        var matrix = CheckPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalSphere[i].Radius = LocalSphere[i].Radius;
-            GlobalSphere[i].Center = CheckPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalSphere[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CheckPos.Frame.Origin);
         }
-        GlobalLowPoint = CheckPos.LocalToGlobal(LocalLowPoint);
+        GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
     }
 
     // What CacheGlobalCurrCenter last computed, and for which position (valid until the spheres change).
@@ -241,15 +243,18 @@ internal sealed class SpherePath
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
         float invScale = 1.0f / scale;
+        var spaceMatrix = space.Frame.Matrix;
+        var curMatrix = CurPos.Frame.Matrix;
+        var checkMatrix = CheckPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
-            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(CurPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(spaceMatrix, CurPos, curMatrix, LocalSphere[i].Center) * invScale;
             LocalSpaceCurrCenter[i].Radius = LocalSphere[i].Radius * invScale;
             LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
-            LocalSpaceSphere[i].Center = space.LocalToLocal(CheckPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceSphere[i].Center = space.LocalToLocal(spaceMatrix, CheckPos, checkMatrix, LocalSphere[i].Center) * invScale;
         }
         LocalSpacePos = space;
-        LocalSpaceZ = space.Frame.GlobalToLocalVec(Vector3.UnitZ);
+        LocalSpaceZ = spaceMatrix.PositionToLocal(Vector3.UnitZ);
         LocalSpaceLowPoint = LocalSpaceSphere[0].Center - LocalSpaceZ * LocalSpaceSphere[0].Radius;
     }
 
