@@ -185,8 +185,7 @@ internal static class ObjectCollisions
         switch (shape.Kind)
         {
             case ShadowShapeKind.Bsp:
-                var partPos = new Position(row.Position.CellId, row.Position.Frame.Combine(shape.PartFrame));
-                return PartCollision.Collide(transition, shape.Model!, partPos, shape.ModelScale);
+                return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
                 path.CacheLocalSpaceSphere(row.Position, 1.0f);
