@@ -78,7 +78,7 @@ public sealed class PhysicsEngine
         var t = _transition;
         Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
-        t.SpherePath.InitPath(cell, begin, target);
+        t.SpherePath.InitPath(cell, in begin, in target);
         bool ok = t.FindTransitionalPosition();
         return Collect(t, ok, state);
     }
