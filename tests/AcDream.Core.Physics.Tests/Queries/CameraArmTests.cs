@@ -41,6 +41,12 @@ public class CameraArmTests
         Assert.True(blocked.Blocked);
         Assert.InRange(blocked.Camera.Origin.Y, 99.691f - 0.006f, 99.691f + 1e-4f);
 
+        // The pivot's cell id names only its frame: labelled with the landblock's first cell, 76 m away, the
+        // arm starts in the cell that holds the pivot and meets the same slab.
+        var relabelled = q.CameraArm(At(0xA9B40001, 100, 97, 1.5f), new Vector3(100, 103, 1.5f));
+        Assert.Equal(Land, relabelled.Camera.CellId);
+        Assert.Equal(blocked.Camera.Origin, relabelled.Camera.Origin);
+
         var clear = q.CameraArm(At(Land, 96, 97, 1.5f), new Vector3(96, 103, 1.5f));
         Assert.Equal(CameraPlacement.Swept, clear.Placement);
         Assert.False(clear.Blocked);
