@@ -5,6 +5,7 @@ using System.IO;
 using System.Numerics;
 using System.Text;
 using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 
@@ -28,11 +29,14 @@ public static class Program
           replay SCENE TRAJ [--tolerance METRES] [--diag]
                                         re-run a recorded trajectory; exit 0 when it matches,
                                         1 with the first difference
+          parity DIR                    check the engine against every parity file (*.json.gz) in
+                                        DIR: one line per file; exit 1 when a file misses its
+                                        threshold
           help                          this text
 
         SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
         --diag prints each frame's structured diagnostics events.
-        Exit codes: 0 success, 1 replay mismatch, 2 usage error or bad file.
+        Exit codes: 0 success, 1 replay or parity mismatch, 2 usage error or bad file.
         """;
 
     /// <summary>Runs the tool.</summary>
@@ -92,6 +96,9 @@ public static class Program
                 case "replay":
                     Expect(options, 2, "replay needs SCENE and TRAJ");
                     return Replay(options, stdout);
+                case "parity":
+                    Expect(options, 1, "parity needs DIR");
+                    return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
                 default:
                     throw new UsageException($"unknown command '{command}'");
             }
