@@ -36,12 +36,28 @@ public sealed class SceneMover
 {
     private readonly Vector3[] _motion;
 
-    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion)
+    private readonly int[] _motionItemStarts;
+
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, string path = "movers[0]", int[]? motionItemStarts = null)
     {
         Name = name;
         Description = description;
         Start = start;
         _motion = motion;
+        Path = path;
+        _motionItemStarts = motionItemStarts ?? [0];
+    }
+
+    /// <summary>The mover's JSON path in its scene file (e.g. <c>movers[3]</c>), for error messages.</summary>
+    internal string Path { get; }
+
+    /// <summary>The JSON path of the motion item that produced frame <paramref name="frame"/> (repeats expanded).</summary>
+    internal string MotionPath(int frame)
+    {
+        int item = Array.BinarySearch(_motionItemStarts, frame);
+        if (item < 0)
+            item = ~item - 1;
+        return $"{Path}.motion[{item}]";
     }
 
     /// <summary>The mover's name, unique in its scene.</summary>

@@ -96,11 +96,15 @@ public static class SceneLoader
                 ReadObject(value, path);
             var movers = new List<SceneMover>();
             var names = new HashSet<string>(StringComparer.Ordinal);
+            long totalFrames = 0;
             foreach (var (value, path) in o.Array("movers"))
             {
                 var mover = ReadMover(value, path);
                 if (!names.Add(mover.Name))
                     throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
+                totalFrames += mover.FrameCount;
+                if (totalFrames > InputLimits.MaxSceneFrames)
+                    throw new SceneFormatException(path + ".motion", $"the scene's movers walk more than {InputLimits.MaxSceneFrames} frames in all (InputLimits.MaxSceneFrames, movers × frames).");
                 movers.Add(mover);
             }
             if (movers.Count == 0)
@@ -472,17 +476,19 @@ public static class SceneLoader
             var start = o.Opt("floorZ") is { } fz
                 ? MoverState.OnFloor(position, JsonRead.Float(fz, o.Child("floorZ")))
                 : MoverState.Airborne(position);
-            var motion = ReadMotion(o.Req("motion"), o.Child("motion"));
+            var itemStarts = new List<int>();
+            var motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
             o.End();
             var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
-            return new SceneMover(name, description, start, motion);
+            return new SceneMover(name, description, start, motion, path, [.. itemStarts]);
         }
 
-        private static Vector3[] ReadMotion(JsonElement e, string path)
+        private static Vector3[] ReadMotion(JsonElement e, string path, List<int> itemStarts)
         {
             var frames = new List<Vector3>();
             foreach (var (value, p) in JsonRead.Array(e, path))
             {
+                itemStarts.Add(frames.Count);
                 if (value.ValueKind == JsonValueKind.Array)
                 {
                     frames.Add(JsonRead.Vec3(value, p));

@@ -43,7 +43,7 @@ public static class SceneRunner
             {
                 var target = state.Position;
                 target.Frame.Origin += mover.Motion[f];
-                var result = engine.Resolve(mover.Description, state, target);
+                var result = ResolveFrame(engine, mover, f, state, target);
                 frames.Add(TrajectoryFrame.From(target, result));
                 state = result.Next;
                 if (log is not null)
@@ -55,5 +55,24 @@ public static class SceneRunner
             movers.Add(new MoverTrajectory(mover.Name, frames));
         }
         return new Trajectory(scene.Name, scene.Sha256, LibraryVersion, movers);
+    }
+
+    /// <summary>
+    /// Resolves one frame of a mover; input the engine refuses becomes a <see cref="SceneFormatException"/>
+    /// naming the JSON path it came from: the mover (its start state, on the first frame) or the motion item
+    /// of that frame, and the mover and frame.
+    /// </summary>
+    internal static MoveResult ResolveFrame(PhysicsEngine engine, SceneMover mover, int frame, in MoverState state, Position target)
+    {
+        try
+        {
+            return engine.Resolve(mover.Description, state, target);
+        }
+        catch (ArgumentException ex)
+        {
+            string path = frame == 0 && ex.Message.StartsWith("state.", StringComparison.Ordinal) ? mover.Path : mover.MotionPath(frame);
+            var wrapped = SceneFormatException.Wrap(path, ex);
+            throw new SceneFormatException(path, $"mover \"{mover.Name}\", frame {frame}: {wrapped.Detail}", ex);
+        }
     }
 }

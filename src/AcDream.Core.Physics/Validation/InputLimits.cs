@@ -66,4 +66,11 @@ public static class InputLimits
     /// polygons compile in a few seconds. Retail physics meshes have at most a few hundred.
     /// </summary>
     public const int MaxCompilePolygons = 4096;
+
+    /// <summary>
+    /// The most frames a scene file's movers may walk in all (movers × frames, repeats expanded): 200 000,
+    /// about 10 s of running and 100 MB of trajectory. The real-cell scenes have at most about 3 000 frames;
+    /// one mover may walk at most <c>SceneLoader.MaxFramesPerMover</c>.
+    /// </summary>
+    public const int MaxSceneFrames = 200_000;
 }
