@@ -68,19 +68,27 @@ internal static class Guard
             throw new ArgumentException($"{Name(field, suffix)}: must be a finite number of zero or more, got {value}.", Name(field, suffix));
     }
 
-    /// <summary>Checks a rotation and returns it normalized; a zero-length or non-finite quaternion is refused.</summary>
+    /// <summary>
+    /// Checks a rotation. A rotation retail's Frame::IsValid accepts (squared length within 0.001 of one)
+    /// is returned unchanged, as retail uses it; any other finite, non-zero one is normalized the way
+    /// Frame::set_rotate normalizes (times the reciprocal length). Zero-length or non-finite is refused.
+    /// </summary>
     public static Quaternion Rotation(Quaternion q, string field, string? suffix = null)
     {
         if (!float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W))
             throw new ArgumentException($"{Name(field, suffix)}: quaternion must be finite, got {q}.", Name(field, suffix));
+        if (Physics.Frame.IsValidRotation(q))
+            return q;
         float length = q.Length();
         if (length < 1e-6f)
             throw new ArgumentException($"{Name(field, suffix)}: quaternion has zero length.", Name(field, suffix));
-        // Retail normalizes by the reciprocal length; a length that overflows float (components near 1e19
-        // or more) would give a zero reciprocal and a zero (then NaN) rotation, so it is refused.
+        // A length that overflows float (components near 1e19 or more) is refused rather than normalized:
+        // a client that sends such a rotation has a bug, and the error says so.
         if (!float.IsFinite(length))
             throw new ArgumentException($"{Name(field, suffix)}: quaternion is too long to normalize (its length overflows), got {q}.", Name(field, suffix));
-        return Quaternion.Multiply(q, 1f / length);
+        var frame = default(Frame);
+        frame.SetRotate(q.W, q.X, q.Y, q.Z);
+        return frame.Orientation;
     }
 
     /// <summary>

@@ -83,7 +83,7 @@ public class BadInputTests
         ["E03"] = new("PhysicsEngine.Resolve", "target origin +∞", "target.origin", f => { var t = f.Target; t.Frame.Origin.Y = float.PositiveInfinity; f.Resolve(f.State, t); }),
         ["E04"] = new("PhysicsEngine.Resolve", "target origin beyond ±100 km", "target.origin", f => f.Resolve(f.State, f.Offset(new Vector3(0, 200_000, 0)))),
         ["E05"] = new("PhysicsEngine.Resolve", "state orientation zero-length quaternion", "state.position.orientation", f => { var s = f.State; s.Position.Frame.Orientation = Zero; f.Resolve(s, f.Target); }),
-        ["E06"] = new("PhysicsEngine.Resolve", "target orientation NaN", "target.orientation", f => { var t = f.Target; t.Frame.Orientation.W = float.NaN; f.Resolve(f.State, t); }),
+        ["E06"] = new("PhysicsEngine.Resolve", "target orientation NaN", "target.orientation", f => { var t = f.Target; t.Frame.Orientation = t.Frame.Orientation with { W = float.NaN }; f.Resolve(f.State, t); }),
         ["E07"] = new("PhysicsEngine.Resolve", "state cell unknown", "state.position.cell", f => { var s = f.State; s.Position.CellId = 0x12340001; f.Resolve(s, f.Target); }),
         ["E08"] = new("PhysicsEngine.Resolve", "target cell label unknown", "target.cell", f => { var t = f.Target; t.CellId = 0xA9B40200; f.Resolve(f.State, t); }),
         ["E09"] = new("PhysicsEngine.Resolve", "contact plane normal NaN", "state.contactPlane.normal", f => { var s = f.State; s.ContactPlane.Normal = NaN3; f.Resolve(s, f.Target); }),
