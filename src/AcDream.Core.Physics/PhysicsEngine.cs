@@ -42,8 +42,10 @@ public sealed class PhysicsEngine
     /// in the same or a neighbouring landblock's frame, labelled with the start cell or any cell of the
     /// target's landblock). Throws <see cref="ArgumentException"/> naming the field, before anything is
     /// changed, for non-finite or out-of-range input (coordinates beyond ±<see cref="InputLimits.MaxCoordinate"/>),
-    /// zero-length rotations, a contact plane whose normal is not a unit vector, and unknown cells (the
-    /// state's cell, the target's cell label and a non-zero contact-plane cell must all be in the world).
+    /// zero-length rotations or rotations whose length overflows, a contact plane whose normal is not a unit
+    /// vector, unknown cells (the state's cell, the target's cell label and a non-zero contact-plane cell
+    /// must all be in the world), and a state whose origin lies more than
+    /// <see cref="InputLimits.MaxDistanceFromCell"/> plus the mover's reach outside its cell.
     /// A motion cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps (kilometres in one
     /// frame) is not an error: as in retail it is refused at once, with <see cref="MoveResult.Succeeded"/>
     /// false and <see cref="MoveResult.Next"/> equal to <paramref name="state"/>.
@@ -60,6 +62,7 @@ public sealed class PhysicsEngine
         target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
         var cells = _transition.World.Cells;
         var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
         cells.GetRequired(target.CellId, "target.cell");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
@@ -90,6 +93,7 @@ public sealed class PhysicsEngine
         Guard.Frame(position.Frame, "position");
         position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
         var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
+        Guard.NearCell(cell.DistanceOutside(position.Frame.Origin), mover.Reach, position.CellId, position.Frame.Origin, "position.origin");
         var t = _transition;
         var airborne = MoverState.Airborne(position);
         Prepare(t, mover, airborne);
