@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 
 namespace AcDream.Core.Physics;
@@ -7,6 +8,12 @@ public static class LandDefs
 {
     /// <summary>The lowest cell index of an indoor env cell; 1..64 are the 8×8 outdoor land cells.</summary>
     public const uint FirstEnvCell = 0x100;
+
+    /// <summary>Landblocks along each axis of the world, 0x00..0xFE (retail LandDefs::get_vars: 255).</summary>
+    public const int BlocksPerSide = 255;
+
+    /// <summary>Land cells along each axis of the world: 8 per landblock, 2040 in all (global land-cell coordinates 0..2039).</summary>
+    public const int CellsPerSide = BlocksPerSide * 8;
 
     /// <summary>True for an outdoor land cell id (cell part below 0x100).</summary>
     public static bool IsLandCell(uint cellId) => (cellId & 0xFFFF) < FirstEnvCell;
@@ -57,5 +64,54 @@ public static class LandDefs
         if (gx < 0 || gy < 0 || gx >= 2040 || gy >= 2040)
             return 0;
         return ((uint)(gx >> 3) << 24) | ((uint)(gy >> 3) << 16) | (uint)((gx & 7) * 8 + (gy & 7) + 1);
+    }
+
+    /// <summary>
+    /// The global position of the south-west corner of <paramref name="cellId"/>'s landblock. Global
+    /// coordinates start at the south-west corner of landblock 0x0000 and grow east (X) and north (Y) by
+    /// <see cref="PhysicsConstants.LandblockLength"/> per landblock.
+    /// </summary>
+    public static Vector3 BlockCorner(uint cellId) =>
+        new((cellId >> 24) * PhysicsConstants.LandblockLength, ((cellId >> 16) & 0xFF) * PhysicsConstants.LandblockLength, 0f);
+
+    /// <summary>
+    /// Retail LandDefs::adjust_to_outside (LandDefs.c, 005A9BC0): re-expresses a point given in the space of
+    /// <paramref name="cellId"/>'s landblock in the landblock that holds it, and labels it with the outdoor land
+    /// cell below it. The point may lie beyond the block's edges (it is moved by whole landblocks); coordinates
+    /// within <see cref="PhysicsConstants.Epsilon"/> of zero are first snapped to zero, as retail does, so a point
+    /// a hair west of or south of a block's corner stays in that block. Returns false, changing nothing, when the
+    /// cell id is not an outdoor (1..0x40) or indoor (0x100..0xFFFD, 0xFFFF) id, a coordinate is not finite,
+    /// or the point is outside the world.
+    /// </summary>
+    /// <param name="cellId">In: any cell of the landblock the point is relative to. Out: the outdoor land cell holding it.</param>
+    /// <param name="local">In: the point, relative to that landblock's south-west corner. Out: relative to the new landblock's (Z unchanged).</param>
+    public static bool TryAdjustToOutside(ref uint cellId, ref Vector3 local)
+    {
+        uint index = cellId & 0xFFFF;
+        if (!((index >= 1 && index <= 0x40) || (index >= FirstEnvCell && index <= 0xFFFD) || index == 0xFFFF))
+            return false;
+        if (!float.IsFinite(local.X) || !float.IsFinite(local.Y))
+            return false;
+        // Retail computes in double (x87); so do we, so that the cell and the wrapped coordinate agree.
+        double x = MathF.Abs(local.X) < PhysicsConstants.Epsilon ? 0.0 : local.X;
+        double y = MathF.Abs(local.Y) < PhysicsConstants.Epsilon ? 0.0 : local.Y;
+        double gx = (cellId >> 24) * 8.0 + Math.Floor(x / PhysicsConstants.LandCellLength);
+        double gy = ((cellId >> 16) & 0xFF) * 8.0 + Math.Floor(y / PhysicsConstants.LandCellLength);
+        if (!(gx >= 0 && gy >= 0 && gx < CellsPerSide && gy < CellsPerSide))
+            return false;
+        cellId = LandCellAtGlobal((int)gx, (int)gy);
+        local = new Vector3(Wrap(x), Wrap(y), local.Z);
+        return true;
+    }
+
+    /// <summary>A coordinate relative to the landblock that holds it: [0, 192).</summary>
+    /// <remarks>
+    /// Exact for a float input: the result lies on the input's float grid, except for inputs in (-192, 0), whose
+    /// result rounds, but stays below 192 because |v| ≥ <see cref="PhysicsConstants.Epsilon"/> there (smaller ones were snapped).
+    /// </remarks>
+    private static float Wrap(double v)
+    {
+        const double block = PhysicsConstants.LandblockLength;
+        return (float)(v - Math.Floor(v / block) * block);
     }
 }

@@ -1,4 +1,6 @@
+using System;
 using System.Numerics;
+using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics;
 
@@ -24,6 +26,47 @@ public struct Position
 
     /// <summary>Creates a position with no rotation.</summary>
     public Position(uint cellId, Vector3 origin) : this(cellId, new Frame(origin)) { }
+
+    /// <summary>
+    /// The outdoor position of a point given relative to landblock <paramref name="landblock"/>'s south-west
+    /// corner: the point may lie beyond that block's edges, and the result is in the landblock that holds
+    /// it, labelled with the outdoor land cell below it (<see cref="LandDefs.TryAdjustToOutside"/>; retail
+    /// adjust_to_outside). No rotation. For a point inside a building, use the indoor cell's id instead.
+    /// </summary>
+    /// <param name="landblock">The landblock, 0xXXYY (X east, Y north; each 0x00..0xFE).</param>
+    /// <param name="local">The point relative to the landblock's south-west corner, metres.</param>
+    /// <exception cref="ArgumentException">The landblock is not in the world, the point is not finite, or it falls outside the world.</exception>
+    public static Position Outdoor(uint landblock, Vector3 local)
+    {
+        if (landblock > 0xFFFF || (landblock >> 8) >= LandDefs.BlocksPerSide || (landblock & 0xFF) >= LandDefs.BlocksPerSide)
+            throw new ArgumentException($"landblock: must be 0xXXYY with X and Y in 0x00..0xFE, got 0x{landblock:X}.", nameof(landblock));
+        Guard.Finite(local, "local");
+        uint cell = (landblock << 16) | 1;
+        if (!LandDefs.TryAdjustToOutside(ref cell, ref local))
+            throw new ArgumentException($"local: {local} relative to landblock 0x{landblock:X4} is outside the world.", nameof(local));
+        return new Position(cell, local);
+    }
+
+    /// <summary>
+    /// The outdoor position of a global point (<see cref="LandDefs.BlockCorner"/>: metres from the south-west
+    /// corner of landblock 0x0000): its landblock, landblock-local origin and outdoor land cell. No rotation.
+    /// A float global coordinate resolves about 4 mm at the far edge of the world (49 km); keep positions
+    /// landblock-local (<see cref="Outdoor"/>) where precision matters.
+    /// </summary>
+    /// <param name="global">The global point, metres.</param>
+    /// <exception cref="ArgumentException">The point is not finite or falls outside the world.</exception>
+    public static Position FromGlobal(Vector3 global)
+    {
+        Guard.Finite(global, "global");
+        uint cell = 1;
+        var local = global;
+        if (!LandDefs.TryAdjustToOutside(ref cell, ref local))
+            throw new ArgumentException($"global: {global} is outside the world (0 to {LandDefs.BlocksPerSide * PhysicsConstants.LandblockLength} m on X and Y).", nameof(global));
+        return new Position(cell, local);
+    }
+
+    /// <summary>The origin as a global point (<see cref="LandDefs.BlockCorner"/> plus the landblock-local origin); for any cell, indoor or outdoor.</summary>
+    public readonly Vector3 ToGlobal() => LandDefs.BlockCorner(CellId) + Frame.Origin;
 
     /// <summary>The origin, landblock-local.</summary>
     public readonly Vector3 Origin => Frame.Origin;

@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics.Bsp;
 /// Internal nodes route by the split plane: at or beyond <c>radius − EPSILON</c> on one side the query
 /// goes to that side only, otherwise to both.
 /// </summary>
-public static class BspNodeQuery
+internal static class BspNodeQuery
 {
     private const float Epsilon = PhysicsConstants.Epsilon;
 

@@ -7,7 +7,7 @@ using AcDream.Core.Physics.Transitions;
 namespace AcDream.Core.Physics.Bsp;
 
 /// <summary>Where a sphere lies against a cell BSP (retail BoundingType).</summary>
-public enum BoundingType
+internal enum BoundingType
 {
     /// <summary>Entirely outside.</summary>
     Outside = 0,
@@ -23,7 +23,7 @@ public enum BoundingType
 /// move the mover are turned into the check position's landblock space through
 /// <see cref="SpherePath.LocalSpacePos"/> and the tree's scale. Nothing here allocates.
 /// </summary>
-public static class BspQuery
+internal static class BspQuery
 {
     /// <summary>Retail BSPTREE::adjust_to_plane and placement_insert give up after this many tries (hard-coded in retail).</summary>
     private const int AdjustIterations = 15;

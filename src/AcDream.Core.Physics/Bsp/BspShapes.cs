@@ -95,6 +95,32 @@ public static class BspShapes
     public static BspTree Slab(Vector3 center, Vector3 size, Quaternion rotation, PolygonSides sides = PolygonSides.Single)
         => BspCompiler.Compile(SlabPolygons(center, size, rotation, sides), "slab");
 
+    /// <summary>
+    /// A containment tree for an indoor cell shaped like an axis-aligned box (cell space): a chain of its six
+    /// faces' planes facing inward, no polygons. A point is inside the cell when it is in front of all six
+    /// (<see cref="World.EnvCell.ContainsPoint"/>); pass it as an <see cref="World.EnvCell"/>'s cell BSP.
+    /// Retail cells carry their own containment trees (CellStruct's cell BSP); this one is for worlds built by hand.
+    /// </summary>
+    /// <param name="min">The low corner.</param>
+    /// <param name="max">The high corner; every component must be greater than <paramref name="min"/>'s.</param>
+    /// <exception cref="ArgumentException">A corner is not finite, or the box is empty or flat on some axis.</exception>
+    public static BspTree CellBox(Vector3 min, Vector3 max)
+    {
+        CheckBox(min, max);
+        var center = (min + max) * 0.5f;
+        var bounds = new Sphere(center, Vector3.Distance(center, max));
+        Plane[] planes =
+        [
+            new(-Vector3.UnitX, max.X), new(Vector3.UnitX, -min.X),
+            new(-Vector3.UnitY, max.Y), new(Vector3.UnitY, -min.Y),
+            new(-Vector3.UnitZ, max.Z), new(Vector3.UnitZ, -min.Z),
+        ];
+        var nodes = new BspNodeData[6];
+        for (int i = 0; i < 6; i++)
+            nodes[i] = new BspNodeData { SplitPlane = planes[i], Front = i < 5 ? i + 1 : -1, Back = -1, Bounds = bounds };
+        return BspTree.Create(Array.Empty<Polygon>(), nodes, "cellBox");
+    }
+
     /// <summary>The corners of the six box faces (+X, −X, +Y, −Y, +Z, −Z), counter-clockwise from outside.</summary>
     internal static Vector3[][] BoxCorners(Vector3 min, Vector3 max)
     {

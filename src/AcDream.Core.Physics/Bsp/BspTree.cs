@@ -26,7 +26,7 @@ public sealed class BspNodeData
 }
 
 /// <summary>A node of a <see cref="BspTree"/> in its flat, validated form.</summary>
-public readonly struct BspNode
+internal readonly struct BspNode
 {
     /// <summary>Internal nodes: the unit split plane.</summary>
     public readonly Plane SplitPlane;
@@ -78,11 +78,11 @@ public sealed class BspTree
     }
 
     /// <summary>The nodes; index 0 is the root.</summary>
-    public ReadOnlySpan<BspNode> Nodes => _nodes;
+    internal ReadOnlySpan<BspNode> Nodes => _nodes;
     /// <summary>The polygons the nodes refer to.</summary>
     public ReadOnlySpan<Polygon> Polygons => _polygons;
     /// <summary>The polygon index lists of all nodes, concatenated.</summary>
-    public ReadOnlySpan<int> PolygonIndices => _polygonIndices;
+    internal ReadOnlySpan<int> PolygonIndices => _polygonIndices;
     /// <summary>The root's bounding sphere (retail BSPTREE::GetSphere).</summary>
     public Sphere Bounds => _nodes[0].Bounds;
 

@@ -4,7 +4,7 @@ using System.Numerics;
 namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>Which side of a plane something lies on (retail Sidedness).</summary>
-public enum Sidedness
+internal enum Sidedness
 {
     /// <summary>In front of the plane (retail POSITIVE).</summary>
     Positive = 0,
@@ -26,7 +26,7 @@ public enum Sidedness
 /// the front), so a point is on the inner side of that edge when <c>(p − a)·inward ≥ 0</c>.
 /// Retail ignores the polygon's sidedness in every sphere test; only <see cref="PolygonHitsRay"/> reads it.
 /// </remarks>
-public static class PolygonQuery
+internal static class PolygonQuery
 {
     private const float Epsilon = PhysicsConstants.Epsilon;
 

@@ -190,7 +190,7 @@ public static class SceneLoader
             else if (o.Opt("cellBox") is { } cellBox)
             {
                 var (min, max) = ReadBox(new JsonObj(cellBox, o.Child("cellBox")));
-                tree = CellBox(min, max);
+                tree = BspShapes.CellBox(min, max);
             }
             else
             {
@@ -214,23 +214,6 @@ public static class SceneLoader
             Sphere? bounds = o.Opt("boundingSphere") is { } b ? ReadSphere(b, o.Child("boundingSphere")) : null;
             o.End();
             return Checked(path, () => new PhysicsModel(tree, bounds, path));
-        }
-
-        /// <summary>A containment tree for an axis-aligned box: a chain of its six faces' planes, facing inward.</summary>
-        private static BspTree CellBox(Vector3 min, Vector3 max)
-        {
-            var center = (min + max) * 0.5f;
-            var bounds = new Sphere(center, Vector3.Distance(center, max));
-            Plane[] planes =
-            [
-                new(-Vector3.UnitX, max.X), new(Vector3.UnitX, -min.X),
-                new(-Vector3.UnitY, max.Y), new(Vector3.UnitY, -min.Y),
-                new(-Vector3.UnitZ, max.Z), new(Vector3.UnitZ, -min.Z),
-            ];
-            var nodes = new BspNodeData[6];
-            for (int i = 0; i < 6; i++)
-                nodes[i] = new BspNodeData { SplitPlane = planes[i], Front = i < 5 ? i + 1 : -1, Back = -1, Bounds = bounds };
-            return BspTree.Create(Array.Empty<Polygon>(), nodes, "cellBox");
         }
 
         private static BspNodeData ReadNode(JsonElement e, string path, List<Polygon> polygons)

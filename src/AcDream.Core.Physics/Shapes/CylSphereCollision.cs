@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics.Shapes;
 /// radsum of the axis in XY and its body overlaps that Z span. Everything is in the check cell's
 /// landblock space. Nothing here allocates.
 /// </summary>
-public static class CylSphereCollision
+internal static class CylSphereCollision
 {
     /// <summary>
     /// Retail CCylSphere::intersects_sphere: collides the path's check spheres with a cylinder given in the

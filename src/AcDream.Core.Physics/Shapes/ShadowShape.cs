@@ -18,7 +18,7 @@ public enum ShadowShapeKind : byte
 /// One collision shape of an object, in the object's space, already scaled (see
 /// <see cref="ShadowShapeBuilder.FromSetup"/>). Immutable; shared by every row that refers to it.
 /// </summary>
-public sealed class ShadowShape
+internal sealed class ShadowShape
 {
     private ShadowShape(ShadowShapeKind kind, int index) { Kind = kind; Index = index; }
 

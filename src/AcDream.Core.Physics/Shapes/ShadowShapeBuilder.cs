@@ -6,7 +6,7 @@ using AcDream.Core.Physics.Validation;
 namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>Turns a setup into the collision shapes that represent an object (the retail CPartArray's physics content).</summary>
-public static class ShadowShapeBuilder
+internal static class ShadowShapeBuilder
 {
     /// <summary>
     /// Emits every shape of the setup, scaled as retail scales them: one BSP shape per part that has a

@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Shapes;
 /// position (<see cref="SpherePath.GlobalSphere"/>). Everything is in the check cell's landblock space.
 /// Nothing here allocates.
 /// </summary>
-public static class SphereCollision
+internal static class SphereCollision
 {
     /// <summary>
     /// Retail CSphere::intersects_sphere: collides the path's check spheres with a target sphere given in

@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics.Transitions;
 /// What a transition learned about contact (retail COLLISIONINFO): the contact plane under the mover
 /// and the last one known from earlier frames, the sliding and collision normals, and the objects hit.
 /// </summary>
-public sealed class CollisionInfo
+internal sealed class CollisionInfo
 {
     /// <summary>The last contact plane is known (carried between frames).</summary>
     public bool LastKnownContactPlaneValid;

@@ -1,7 +1,7 @@
 namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>How a sphere path is inserted into the world (retail InsertType).</summary>
-public enum InsertType
+internal enum InsertType
 {
     /// <summary>A move from a begin position to an end position.</summary>
     Transition = 0,

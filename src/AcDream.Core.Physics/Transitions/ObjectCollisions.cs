@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Transitions;
 /// Collides a transition with the objects of one cell (retail CObjCell::find_obj_collisions and
 /// CPhysicsObj::find_obj_collisions), through the retail dispatch ladder.
 /// </summary>
-public static class ObjectCollisions
+internal static class ObjectCollisions
 {
     /// <summary>
     /// Retail's binary choice on HAS_PHYSICS_BSP_PS (acclient CPhysicsObj::FindObjCollisions; ACE

@@ -1,7 +1,7 @@
 namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>The mover's description for one transition (retail OBJECTINFO).</summary>
-public sealed class ObjectInfo
+internal sealed class ObjectInfo
 {
     /// <summary>The mover's retail object id (0 for none); the mover never collides with itself.</summary>
     public uint ObjectId;

@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics.Transitions;
 /// (SpherePath caps num_sphere at 2).
 /// </summary>
 [InlineArray(2)]
-public struct SpherePair
+internal struct SpherePair
 {
     private Sphere _first;
 }

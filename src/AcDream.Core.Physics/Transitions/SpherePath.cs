@@ -10,7 +10,7 @@ namespace AcDream.Core.Physics.Transitions;
 /// walkable and negative-polygon bookkeeping the collision routines share. Reused between transitions:
 /// nothing here allocates after construction.
 /// </summary>
-public sealed class SpherePath
+internal sealed class SpherePath
 {
     /// <summary>How many spheres the mover has (1 or 2).</summary>
     public int NumSphere;

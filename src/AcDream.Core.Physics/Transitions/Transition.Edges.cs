@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Transitions;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Retail edge_slide: a grounded mover found no ground below. Without EdgeSlide it may walk off; with

@@ -5,7 +5,7 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Retail transitional_insert: inserts the check position into its cell and the other cells it
@@ -257,11 +257,14 @@ public sealed partial class Transition
     }
 
     /// <summary>
-    /// Retail OBJECTINFO::validate_walkable against a terrain contact plane (the viewer's arm is not
-    /// modelled): records the plane as contact, and pushes a sphere that sank into it back up.
+    /// Retail OBJECTINFO::validate_walkable against a terrain contact plane: records the plane as contact,
+    /// and pushes a sphere that sank into it back up. The camera (IsViewer) takes its own arm,
+    /// <see cref="ValidateViewerWalkable"/>.
     /// </summary>
     internal TransitionState ValidateWalkable(in Sphere check, in Plane plane, bool isWater, float waterDepth, uint cellId)
     {
+        if (IsViewer)
+            return ValidateViewerWalkable(check, plane);
         var path = SpherePath;
         var ci = CollisionInfo;
         float dist = Vector3.Dot(check.Center - new Vector3(0, 0, check.Radius), plane.Normal) + plane.D + waterDepth;
@@ -304,6 +307,34 @@ public sealed partial class Transition
             ci.SetCollisionNormal(plane.Normal);
             ci.CollidedWithEnvironment = true;
         }
+        return TransitionState.Adjusted;
+    }
+
+    /// <summary>
+    /// The camera's arm of retail OBJECTINFO::validate_walkable (acclient 0x0050D010, CObjectInfo.c:136):
+    /// the viewer sphere never takes the terrain as a contact plane. When it has sunk more than EPSILON
+    /// into the plane it is moved back along its sub-step to the point where it touches (the plane distance
+    /// over the sub-step's approach), the plane becomes the collision normal and the result is Adjusted.
+    /// Retail quirk kept: a camera that began indoors ignores the terrain when that back-off fraction is
+    /// outside (0, 1]. Not retail: a sub-step parallel to the plane (no finite fraction) is accepted as it
+    /// is instead of moving the camera to infinity.
+    /// </summary>
+    private TransitionState ValidateViewerWalkable(in Sphere check, in Plane plane)
+    {
+        var path = SpherePath;
+        float dist = Vector3.Dot(check.Center, plane.Normal) + plane.D - check.Radius;
+        if (dist > -PhysicsConstants.Epsilon)
+            return TransitionState.OK;
+        var motion = check.Center - path.GlobalCurrCenter[0].Center;
+        float interp = dist / Vector3.Dot(motion, plane.Normal);
+        if (!float.IsFinite(interp))
+            return TransitionState.OK;
+        bool beganIndoors = path.HasBeginPos && !LandDefs.IsLandCell(path.BeginPos.CellId);
+        if ((interp <= 0f || interp > 1f) && beganIndoors)
+            return TransitionState.OK;
+        path.AddOffsetToCheckPos(motion * -interp);
+        CollisionInfo.SetCollisionNormal(plane.Normal);
+        CollisionInfo.CollidedWithEnvironment = true;
         return TransitionState.Adjusted;
     }
 }

@@ -3,7 +3,7 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics.Transitions;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Retail validate_placement_transition: a placement that fits becomes the current position; one that

@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Transitions;
 
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>
     /// Retail step_up: tries to climb the obstacle whose normal is given by stepping the check position

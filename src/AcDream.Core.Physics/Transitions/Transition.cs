@@ -13,7 +13,7 @@ namespace AcDream.Core.Physics.Transitions;
 /// The work is split by concern over partial files: sub-stepping and validation here, insertion into
 /// cells in Transition.Insert.cs, stepping in Transition.Steps.cs, edge handling in Transition.Edges.cs.
 /// </summary>
-public sealed partial class Transition
+internal sealed partial class Transition
 {
     /// <summary>The mover.</summary>
     public readonly ObjectInfo ObjectInfo = new();

@@ -35,7 +35,7 @@ public sealed class Building
     public ReadOnlySpan<uint> EntranceCells => _entranceCells;
 
     /// <summary>Retail find_building_collisions: the shell, tested as an object part, with the building flag set.</summary>
-    public TransitionState FindCollisions(Transition transition)
+    internal TransitionState FindCollisions(Transition transition)
     {
         var path = transition.SpherePath;
         path.BuildingCheck = true;

@@ -9,13 +9,13 @@ namespace AcDream.Core.Physics.World;
 public abstract class Cell
 {
     /// <summary>Creates a cell.</summary>
-    protected Cell(uint id) => Id = id;
+    private protected Cell(uint id) => Id = id;
 
     /// <summary>The retail cell id (landblock &lt;&lt; 16 | cell).</summary>
     public uint Id { get; }
 
     /// <summary>Collides the transition's check spheres with this cell's geometry (retail find_env_collisions).</summary>
-    public abstract TransitionState FindEnvCollisions(Transition transition);
+    internal abstract TransitionState FindEnvCollisions(Transition transition);
 
     /// <inheritdoc />
     public override string ToString() => $"{GetType().Name} 0x{Id:X8}";

@@ -3,7 +3,7 @@ using System.Collections.Generic;
 namespace AcDream.Core.Physics.World;
 
 /// <summary>The cells a sphere path touches (retail CELLARRAY): unique, in discovery order, reused without allocation.</summary>
-public sealed class CellArray
+internal sealed class CellArray
 {
     private readonly List<Cell> _cells = new(16);
 

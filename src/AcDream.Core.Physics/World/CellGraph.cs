@@ -64,7 +64,7 @@ public sealed class CellGraph
     public Cell? Get(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
 
     /// <summary>The cell with this id; throws naming the id when unknown.</summary>
-    public Cell GetRequired(uint cellId, string field) =>
+    internal Cell GetRequired(uint cellId, string field) =>
         Get(cellId) ?? throw new ArgumentException($"{field}: unknown cell 0x{cellId:X8}.", field);
 
     /// <summary>Every cell id, for diagnostics and validation.</summary>
@@ -75,7 +75,7 @@ public sealed class CellGraph
     /// <paramref name="position"/>'s cell) touch. When <paramref name="findContaining"/> is set, returns the
     /// cell holding sphere 0's centre, preferring an indoor cell; otherwise returns null.
     /// </summary>
-    public Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, SpherePath? path)
+    internal Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, SpherePath? path)
     {
         cells.Clear();
         var start = Get(position.CellId);

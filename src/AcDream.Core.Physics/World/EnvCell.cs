@@ -80,11 +80,11 @@ public sealed class EnvCell : Cell
     public bool ContainsPoint(Vector3 point) => BspQuery.PointInsideCellBsp(CellBsp, Position.Frame.GlobalToLocal(point));
 
     /// <summary>Retail sphere_intersects_cell for a landblock-local sphere.</summary>
-    public BoundingType IntersectsSphere(in Sphere sphere) =>
+    internal BoundingType IntersectsSphere(in Sphere sphere) =>
         BspQuery.SphereIntersectsCellBsp(CellBsp, new Sphere(Position.Frame.GlobalToLocal(sphere.Center), sphere.Radius));
 
     /// <inheritdoc />
-    public override TransitionState FindEnvCollisions(Transition transition)
+    internal override TransitionState FindEnvCollisions(Transition transition)
     {
         var path = transition.SpherePath;
         path.ObstructionEthereal = false;

@@ -14,7 +14,7 @@ public sealed class LandCell : Cell
     private readonly Polygon _second;
 
     /// <summary>Creates land cell <paramref name="id"/> from its landblock's terrain.</summary>
-    public LandCell(uint id, Terrain terrain) : base(id)
+    internal LandCell(uint id, Terrain terrain) : base(id)
     {
         uint index = id & 0xFFFF;
         if (index < 1 || index > 64)
@@ -25,11 +25,14 @@ public sealed class LandCell : Cell
         (_first, _second) = terrain.CellTriangles(x, y);
     }
 
+    /// <summary>The cell's two terrain triangles (landblock-local), for the world queries.</summary>
+    internal (Polygon First, Polygon Second) Triangles => (_first, _second);
+
     /// <summary>The building standing in this cell, or null.</summary>
     public Building? Building { get; internal set; }
 
     /// <summary>The terrain triangle under a landblock-local point (by X and Y), or null when outside the cell.</summary>
-    public Polygon? FindTerrainPolygon(Vector3 point)
+    internal Polygon? FindTerrainPolygon(Vector3 point)
     {
         if (PolygonQuery.PointInPoly2D(_first, point, Sidedness.Positive)) return _first;
         if (PolygonQuery.PointInPoly2D(_second, point, Sidedness.Positive)) return _second;
@@ -40,7 +43,7 @@ public sealed class LandCell : Cell
     public bool ContainsPoint(Vector3 point) => FindTerrainPolygon(point) is not null;
 
     /// <inheritdoc />
-    public override TransitionState FindEnvCollisions(Transition transition)
+    internal override TransitionState FindEnvCollisions(Transition transition)
     {
         var path = transition.SpherePath;
         var blockOffset = LandDefs.BlockOffset(path.CheckPos.CellId, Id);

@@ -30,7 +30,7 @@ public enum ShadowFlags : byte
 /// One row of a cell's shadow list: one collision shape of one object, with the object's placement and
 /// state copied in so a query reads one flat row. Rows of one object are contiguous in a cell's list.
 /// </summary>
-public readonly struct ShadowEntry
+internal readonly struct ShadowEntry
 {
     /// <summary>The object's retail id.</summary>
     public readonly uint EntityId;

@@ -57,7 +57,7 @@ public sealed class ShadowObjectRegistry
     }
 
     /// <summary>Registers an object from shapes already built by <see cref="ShadowShapeBuilder.FromSetup"/>.</summary>
-    public void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
+    internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
     {
         ArgumentNullException.ThrowIfNull(shapes);
         string name = $"object 0x{entityId:X8}";
@@ -115,7 +115,7 @@ public sealed class ShadowObjectRegistry
     }
 
     /// <summary>The rows of a cell (empty for a cell with no objects). Valid until the registry is next modified.</summary>
-    public ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId) =>
+    internal ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId) =>
         _byCell.TryGetValue(cellId, out var rows) ? CollectionsMarshal.AsSpan(rows) : ReadOnlySpan<ShadowEntry>.Empty;
 
     /// <summary>The cells an object is listed in.</summary>

@@ -58,7 +58,7 @@ public sealed class Terrain
     }
 
     /// <summary>Builds the two triangles of land cell (x, y), counter-clockwise from above, landblock-local.</summary>
-    public (Polygon First, Polygon Second) CellTriangles(int x, int y)
+    internal (Polygon First, Polygon Second) CellTriangles(int x, int y)
     {
         float s = PhysicsConstants.LandCellLength;
         var sw = new Vector3(x * s, y * s, HeightAt(x, y));

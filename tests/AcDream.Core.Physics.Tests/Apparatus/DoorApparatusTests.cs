@@ -144,12 +144,9 @@ public class DoorApparatusTests
         var state = MoverState.OnFloor(TestGeometry.At(100.3f, 99.3f, 0), 0f);
         var target = state.Position;
         target.Frame.Origin += new Vector3(0.07f, 0.07f, 0);
-        for (int i = 0; i < 50; i++)
-            engine.Resolve(mover, state, target);
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < 200; i++)
-            engine.Resolve(mover, state, target);
-        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        long allocated = Allocations.PerRound(
+            () => { for (int i = 0; i < 50; i++) engine.Resolve(mover, state, target); },
+            () => { for (int i = 0; i < 200; i++) engine.Resolve(mover, state, target); });
         Assert.Equal(0, allocated);
     }
 

@@ -2,6 +2,7 @@ using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
@@ -201,17 +202,23 @@ public class BspQueryTests
         var tree = BoxFixtures.SolidBox(out _);
         var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
         var sphere = new Sphere(new Vector3(1.4f, 0.3f, 0.2f), 0.5f);
-        BspQuery.FindCollisions(tree, t, 1f);
-        BspQuery.SphereIntersectsSolid(tree, sphere);
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < 100; i++)
-        {
-            t.SpherePath.Collide = false;
-            BspQuery.FindCollisions(tree, t, 1f);
-            BspQuery.SphereIntersectsSolid(tree, sphere);
-            BspQuery.PointIntersectsSolid(tree, sphere.Center);
-            BspQuery.SphereIntersectsCellBsp(tree, sphere);
-        }
-        Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+        long allocated = Allocations.PerRound(
+            () =>
+            {
+                BspQuery.FindCollisions(tree, t, 1f);
+                BspQuery.SphereIntersectsSolid(tree, sphere);
+            },
+            () =>
+            {
+                for (int i = 0; i < 100; i++)
+                {
+                    t.SpherePath.Collide = false;
+                    BspQuery.FindCollisions(tree, t, 1f);
+                    BspQuery.SphereIntersectsSolid(tree, sphere);
+                    BspQuery.PointIntersectsSolid(tree, sphere.Center);
+                    BspQuery.SphereIntersectsCellBsp(tree, sphere);
+                }
+            });
+        Assert.Equal(0, allocated);
     }
 }

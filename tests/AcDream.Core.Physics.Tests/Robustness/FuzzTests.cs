@@ -58,26 +58,57 @@ public class FuzzTests(ITestOutputHelper output)
     /// </summary>
     internal static readonly HashSet<int> KnownFailures = [FuzzRegressionTests.CaseSeed];
 
+    /// <summary>
+    /// Open findings that are a class rather than one seed: a perfect-clip mover may end inside a solid
+    /// (<see cref="FuzzRegressionTests.PerfectClipMissile_StillInside_OrFixed"/>). Reported, not failed.
+    /// </summary>
+    internal static bool IsKnownFinding(SceneFuzzer.Case c, string failure) =>
+        (c.Mover.Flags & ObjectInfoState.PerfectClip) != 0 && failure.Contains("penetrates", StringComparison.Ordinal);
+
     internal static int CaseSeed(int seed, int index) => unchecked(seed * 1_000_003 + index);
 
     [Fact]
     public void RandomScenes_KeepTheInvariants()
+        => RunCases(SceneFuzzer.Features.None, DefaultCases, DefaultSeed);
+
+    /// <summary>
+    /// The cases the classic generator never makes: steep terrain, scaled objects, ethereal and missile
+    /// movers, objects longer than a cell, rooms with a doorway portal (every feature may appear in a case).
+    /// </summary>
+    [Fact]
+    public void RandomScenesWithEveryFeature_KeepTheInvariants()
+        => RunCases(SceneFuzzer.Features.All, FeatureCases, FeatureSeed);
+
+    public const int FeatureCases = 1000;
+    public const int FeatureSeed = 20261201;
+
+    private void RunCases(SceneFuzzer.Features features, int defaultCases, int defaultSeed)
     {
-        int cases = int.TryParse(Environment.GetEnvironmentVariable("ACDREAM_FUZZ_CASES"), out var n) && n > 0 ? n : DefaultCases;
-        int seed = int.TryParse(Environment.GetEnvironmentVariable("ACDREAM_FUZZ_SEED"), out var s) ? s : DefaultSeed;
+        int cases = int.TryParse(Environment.GetEnvironmentVariable("ACDREAM_FUZZ_CASES"), out var n) && n > 0 ? n : defaultCases;
+        int seed = int.TryParse(Environment.GetEnvironmentVariable("ACDREAM_FUZZ_SEED"), out var s) ? s : defaultSeed;
         var clock = Stopwatch.StartNew();
         var failures = new List<string>();
-        int frames = 0, solids = 0, hits = 0;
+        int frames = 0, solids = 0, hits = 0, rooms = 0, known = 0;
         for (int i = 0; i < cases; i++)
         {
-            var c = SceneFuzzer.Make(CaseSeed(seed, i));
+            var c = SceneFuzzer.Make(CaseSeed(seed, i), features);
             frames += c.Targets.Count;
             solids += c.Solids.Count;
+            rooms += c.Room is null ? 0 : 1;
             var failure = Check(c, out int caseHits);
             hits += caseHits;
-            if (failure is not null && KnownFailures.Contains(c.Seed))
+            if (KnownFailures.Contains(c.Seed) && features == SceneFuzzer.Features.None)
             {
-                output.WriteLine($"known finding, case seed {c.Seed}: {failure}");
+                // A known finding must not fail the run, and must not fail it either once it is fixed.
+                output.WriteLine(failure is null
+                    ? $"known finding, case seed {c.Seed}, no longer fails: un-pin it (FuzzTests.KnownFailures, FuzzRegressionTests, docs/robustness.md)"
+                    : $"known finding, case seed {c.Seed}: {failure}");
+                continue;
+            }
+            if (failure is not null && IsKnownFinding(c, failure))
+            {
+                known++;
+                output.WriteLine($"known finding (perfect clip), case seed {c.Seed}: {failure}");
                 continue;
             }
             if (failure is not null)
@@ -88,10 +119,10 @@ public class FuzzTests(ITestOutputHelper output)
             }
         }
         clock.Stop();
-        output.WriteLine($"fuzz: seed {seed}, {cases} cases, {frames} frames, {solids} solids, {hits} frames hitting a solid, {clock.Elapsed.TotalSeconds:F2} s, {failures.Count} failures");
+        output.WriteLine($"fuzz ({features}): seed {seed}, {cases} cases, {frames} frames, {solids} solids, {rooms} rooms, {hits} frames hitting a solid, {known} known findings, {clock.Elapsed.TotalSeconds:F2} s, {failures.Count} failures");
         foreach (var f in failures)
             output.WriteLine(f);
         Assert.True(failures.Count == 0,
-            $"fuzz seed {seed} ({cases} cases; reproduce one with SceneFuzzer.Make(case seed)): {failures.Count} failures\n" + string.Join("\n", failures));
+            $"fuzz seed {seed} ({cases} cases; reproduce one with SceneFuzzer.Make(case seed, SceneFuzzer.Features.{features})): {failures.Count} failures\n" + string.Join("\n", failures));
     }
 }

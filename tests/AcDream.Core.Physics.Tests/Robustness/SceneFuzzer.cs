@@ -13,9 +13,33 @@ namespace AcDream.Core.Physics.Tests.Robustness;
 /// in one landblock, with up to six objects (boxes and rotated slabs as BSP parts, cylinders, spheres)
 /// around the landblock's centre; a motion is one mover (one or two spheres) started grounded or in the
 /// air, then a few frames of random offsets and headings.
+/// <see cref="Features"/> add kinds of scene the classic generator never makes; their random draws come
+/// from a second generator, so <c>Make(seed)</c> (no features) gives exactly the classic case.
 /// </summary>
 internal sealed class SceneFuzzer
 {
+    /// <summary>What a case may contain beyond the classic generator.</summary>
+    [Flags]
+    public enum Features
+    {
+        /// <summary>The classic cases.</summary>
+        None = 0,
+        /// <summary>Terrain heights 0–30 m per vertex (slopes up to ~50°, many too steep to walk).</summary>
+        SteepTerrain = 1,
+        /// <summary>Objects registered at a scale of 0.25–3.</summary>
+        ScaledObjects = 2,
+        /// <summary>An ethereal mover: only static objects stop it.</summary>
+        EtherealMover = 4,
+        /// <summary>An airborne, path-clipped missile mover; some objects are missiles (ignored by every mover).</summary>
+        MissileMover = 8,
+        /// <summary>Boxes and slabs 24–40 m long along one axis (longer than a land cell).</summary>
+        LargeObjects = 16,
+        /// <summary>A random room (an env cell with a doorway portal and its building) near the centre; the mover may start inside.</summary>
+        IndoorCell = 32,
+        /// <summary>Every feature.</summary>
+        All = SteepTerrain | ScaledObjects | EtherealMover | MissileMover | LargeObjects | IndoorCell,
+    }
+
     public const uint MoverId = 0x5000_0001;
     public static readonly Vector3 Centre = new(96, 96, 0);
 
@@ -31,13 +55,20 @@ internal sealed class SceneFuzzer
         public required List<Position> Targets;
         public readonly List<Solid> Solids = new();
         public readonly List<string> Description = new();
+        /// <summary>The room, when the case has one.</summary>
+        public FuzzRoom? Room;
         public override string ToString() => $"case seed {Seed}: " + string.Join("; ", Description);
     }
 
-    public static Case Make(int seed)
+    public static Case Make(int seed) => Make(seed, Features.None);
+
+    public static Case Make(int seed, Features features)
     {
         var rng = new Random(seed);
+        var extra = new Random(unchecked(~seed * 7919 + 1));
         float R(float lo, float hi) => lo + (float)rng.NextDouble() * (hi - lo);
+        float X(float lo, float hi) => lo + (float)extra.NextDouble() * (hi - lo);
+        bool Has(Features f) => (features & f) != 0;
         Quaternion AnyRotation()
         {
             var q = new Quaternion(R(-1, 1), R(-1, 1), R(-1, 1), R(-1, 1));
@@ -57,10 +88,11 @@ internal sealed class SceneFuzzer
         else
         {
             var heights = new float[81];
+            float top = Has(Features.SteepTerrain) && extra.Next(2) == 0 ? 30f : 6f;
             for (int i = 0; i < heights.Length; i++)
-                heights[i] = R(0, 6);
+                heights[i] = R(0, 6) * (top / 6f);
             world.Cells.AddLandblock(new Terrain(TestGeometry.Landblock, heights));
-            desc.Add("random terrain");
+            desc.Add(top > 6f ? "steep random terrain (0-30 m)" : "random terrain");
         }
 
         var c = new Case
@@ -68,6 +100,11 @@ internal sealed class SceneFuzzer
             Seed = seed, World = world, Mover = null!, Start = default, Targets = new(),
         };
         c.Description.AddRange(desc);
+        bool etherealMover = Has(Features.EtherealMover) && extra.Next(2) == 0;
+        bool missileMover = !etherealMover && Has(Features.MissileMover) && extra.Next(2) == 0;
+        var passable = new HashSet<uint>(); // solids this mover may pass through
+        if (Has(Features.IndoorCell) && extra.Next(2) == 0)
+            c.Room = FuzzRoom.Add(world, extra, c.Description);
 
         int objects = rng.Next(0, 7);
         for (int i = 0; i < objects; i++)
@@ -83,6 +120,13 @@ internal sealed class SceneFuzzer
                 2 => PhysicsState.ReportCollisions,
                 _ => PhysicsState.None,
             };
+            if (Has(Features.MissileMover) && extra.Next(4) == 0)
+                state |= PhysicsState.Missile;
+            if (etherealMover && (state & PhysicsState.Static) == 0)
+                passable.Add(id);
+            if ((state & PhysicsState.Missile) != 0)
+                passable.Add(id); // missile objects are ignored by every mover
+            float scale = Has(Features.ScaledObjects) && extra.Next(2) == 0 ? X(0.25f, 3f) : 1f;
             int kind = rng.Next(4);
             PhysicsSetup setup;
             switch (kind)
@@ -92,6 +136,12 @@ internal sealed class SceneFuzzer
                 {
                     // A box (kind 0) or a thin slab (kind 1), as a BSP part with its own rotation inside the object.
                     var half = kind == 0 ? new Vector3(R(0.2f, 2f), R(0.2f, 2f), R(0.2f, 2f)) : new Vector3(R(0.5f, 2f), R(0.02f, 0.2f), R(0.5f, 2f));
+                    if (Has(Features.LargeObjects) && extra.Next(2) == 0)
+                    {
+                        // Longer than a land cell along X or Y (scaled objects are then kept at scale 1).
+                        if (extra.Next(2) == 0) half.X = X(12f, 20f); else half.Y = X(12f, 20f);
+                        scale = 1f;
+                    }
                     var partRotation = rng.Next(2) == 0 ? Quaternion.Identity : AnyRotation();
                     var partOrigin = new Vector3(R(-0.5f, 0.5f), R(-0.5f, 0.5f), R(-0.5f, 0.5f));
                     var model = new PhysicsModel(BspShapes.Box(-half, half));
@@ -99,9 +149,9 @@ internal sealed class SceneFuzzer
                     if ((state & PhysicsState.Ethereal) == 0)
                     {
                         var objFrame = pos.Frame;
-                        c.Solids.Add(new Solid(id, half, objFrame.LocalToGlobal(partOrigin), Quaternion.Normalize(objFrame.Orientation * partRotation)));
+                        c.Solids.Add(new Solid(id, half * scale, objFrame.LocalToGlobal(partOrigin * scale), Quaternion.Normalize(objFrame.Orientation * partRotation)));
                     }
-                    c.Description.Add($"{(kind == 0 ? "box" : "slab")} 0x{id:X8} half {half} at {at} rot {pos.Frame.Orientation} part {partOrigin} {partRotation} {state}");
+                    c.Description.Add($"{(kind == 0 ? "box" : "slab")} 0x{id:X8} half {half} at {at} rot {pos.Frame.Orientation} part {partOrigin} {partRotation} {state} scale {scale}");
                     break;
                 }
                 case 2:
@@ -113,8 +163,9 @@ internal sealed class SceneFuzzer
                     c.Description.Add($"sphere 0x{id:X8} {setup.Spheres[0]} at {at} {state}");
                     break;
             }
-            world.Objects.Register(id, setup, pos, 1f, state);
+            world.Objects.Register(id, setup, pos, scale, state);
         }
+        c.Solids.RemoveAll(solid => passable.Contains(solid.Id));
 
         // The mover: one or two spheres, started clear of every solid (a few tries, then no solids are checked).
         float radius = R(0.2f, 0.6f);
@@ -122,8 +173,16 @@ internal sealed class SceneFuzzer
             ? new[] { new Sphere(new Vector3(0, 0, radius), radius) }
             : new[] { new Sphere(new Vector3(0, 0, radius), radius), new Sphere(new Vector3(0, 0, radius + R(0.3f, 1.2f)), radius) };
         var flags = rng.Next(3) == 0 ? PhysicsState.Gravity : PhysicsState.Gravity | PhysicsState.EdgeSlide;
-        c.Mover = new MoverDescription(MoverId, spheres, R(0f, 1f), R(0f, 0.5f), flags, ObjectInfoState.IsPlayer);
-        bool grounded = rng.Next(3) != 0;
+        var info = ObjectInfoState.IsPlayer;
+        if (etherealMover)
+            flags |= PhysicsState.Ethereal;
+        if (missileMover)
+        {
+            flags = PhysicsState.Missile;
+            info = extra.Next(2) == 0 ? ObjectInfoState.PathClipped : ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip;
+        }
+        c.Mover = new MoverDescription(MoverId, spheres, R(0f, 1f), R(0f, 0.5f), flags, info);
+        bool grounded = rng.Next(3) != 0 && !missileMover;
         MoverState start = default;
         for (int attempt = 0; attempt < 20; attempt++)
         {
@@ -135,8 +194,10 @@ internal sealed class SceneFuzzer
             if (Penetration.Worst(c, start.Position) <= PhysicsConstants.Epsilon)
                 break;
         }
+        if (c.Room is { } room && extra.Next(2) == 0)
+            start = room.StartInside(extra, grounded);
         c.Start = start;
-        c.Description.Add($"mover r={radius} spheres={spheres.Length} {flags} {(grounded ? "grounded" : "airborne")} at {start.Position.Origin}");
+        c.Description.Add($"mover r={radius} spheres={spheres.Length} {flags} {info} {(grounded ? "grounded" : "airborne")} at {start.Position}");
 
         int frames = rng.Next(1, 6);
         for (int i = 0; i < frames; i++)

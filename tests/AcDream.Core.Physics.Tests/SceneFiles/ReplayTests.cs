@@ -210,11 +210,11 @@ public class SceneHotPathTests
             }
         }
         var array = inputs.ToArray();
-        for (int i = 0; i < array.Length; i++)
-            engine.Resolve(array[i].Mover, array[i].State, array[i].Target);
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < array.Length; i++)
-            engine.Resolve(array[i].Mover, array[i].State, array[i].Target);
-        Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+        void ResolveAll()
+        {
+            for (int i = 0; i < array.Length; i++)
+                engine.Resolve(array[i].Mover, array[i].State, array[i].Target);
+        }
+        Assert.Equal(0, Allocations.PerRound(ResolveAll, ResolveAll));
     }
 }

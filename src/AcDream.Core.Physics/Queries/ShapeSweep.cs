@@ -1,0 +1,121 @@
+using System.Numerics;
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Reference;
+
+namespace AcDream.Core.Physics.Queries;
+
+/// <summary>
+/// The first contact of a swept sphere (radius 0 for a ray) with one placed shape, by the exact times of
+/// impact of <see cref="ReferenceToi"/>: faces are met only from their front (single-sided polygons), so a
+/// cast that starts inside a closed solid passes out of it; a sphere already touching a shape hits it at
+/// fraction 0 only when it moves into it. Sphere and cylinder obstacles whose solid holds the cast's start
+/// are ignored for the same reason. Everything here is in the query's landblock frame unless named local.
+/// </summary>
+internal static class ShapeSweep
+{
+    /// <summary>The best contact so far: fraction, normal (query frame), and whether there is one.</summary>
+    internal struct Best
+    {
+        public float Fraction;
+        public Vector3 Normal;
+        public bool Found;
+
+        public static Best None(float limit) => new() { Fraction = limit };
+
+        /// <summary>Keeps the contact when it is earlier (the first found wins a tie, so results follow the fixed test order).</summary>
+        public bool Offer(float fraction, Vector3 normal)
+        {
+            if (Found ? !(fraction < Fraction) : !(fraction <= Fraction))
+                return false;
+            Fraction = fraction;
+            Normal = normal;
+            Found = true;
+            return true;
+        }
+    }
+
+    /// <summary>
+    /// Sweeps against every polygon of a BSP tree placed at <paramref name="frame"/> in landblock space
+    /// shifted by <paramref name="blockShift"/> from the query's frame, with a uniform scale. Leaves whose
+    /// bounding sphere the swept sphere cannot reach are skipped. With <paramref name="walkableOnly"/> only
+    /// surfaces a mover could stand on (normal Z at least floor_z) count. True when it improved <paramref name="best"/>.
+    /// </summary>
+    public static bool Tree(BspTree tree, in Frame frame, Vector3 blockShift, float scale, Vector3 c, Vector3 d, float r,
+        bool walkableOnly, ref Best best)
+    {
+        float inv = 1f / scale;
+        var lc = frame.GlobalToLocal(c - blockShift) * inv;
+        var ld = frame.GlobalToLocalVec(d) * inv;
+        float lr = r * inv;
+        var end = lc + ld * best.Fraction;
+        bool improved = false;
+        var nodes = tree.NodeArray;
+        var polygons = tree.PolygonArray;
+        var indices = tree.IndexArray;
+        if (!Reaches(nodes[0].Bounds, lc, end, lr))
+            return false;
+        for (int i = 0; i < nodes.Length; i++)
+        {
+            ref readonly var node = ref nodes[i];
+            if (!node.IsLeaf || node.PolygonCount == 0 || !Reaches(node.Bounds, lc, end, lr))
+                continue;
+            for (int k = 0; k < node.PolygonCount; k++)
+            {
+                if (!ReferenceToi.Polygon(lc, ld, lr, polygons[indices[node.FirstPolygon + k]], out var hit))
+                    continue;
+                var normal = frame.LocalToGlobalVec(hit.Normal);
+                if (walkableOnly && !(normal.Z >= PhysicsConstants.FloorZ))
+                    continue;
+                if (best.Offer(hit.Time, normal))
+                {
+                    improved = true;
+                    end = lc + ld * best.Fraction;
+                }
+            }
+        }
+        return improved;
+    }
+
+    /// <summary>Sweeps against one landblock-space polygon shifted by <paramref name="blockShift"/> (terrain).</summary>
+    public static bool Polygon(Polygon polygon, Vector3 blockShift, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
+    {
+        if (!ReferenceToi.Polygon(c - blockShift, d, r, polygon, out var hit))
+            return false;
+        if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
+            return false;
+        return best.Offer(hit.Time, hit.Normal);
+    }
+
+    /// <summary>Sweeps against a world-Z cylinder (query frame); ignored when the start lies inside it.</summary>
+    public static bool Cylinder(in CylSphere cylinder, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
+    {
+        if (Vector3.DistanceSquared(ReferenceToi.ClosestPointOnCylinder(c, cylinder), c) == 0f)
+            return false;
+        if (!ReferenceToi.Cylinder(c, d, r, cylinder, out var hit))
+            return false;
+        if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
+            return false;
+        return best.Offer(hit.Time, hit.Normal);
+    }
+
+    /// <summary>Sweeps against a sphere obstacle (query frame); ignored when the start lies inside it.</summary>
+    public static bool Sphere(in Sphere sphere, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
+    {
+        if (Vector3.DistanceSquared(sphere.Center, c) < sphere.Radius * sphere.Radius)
+            return false;
+        if (!ReferenceToi.Sphere(c, d, r, sphere, out var hit))
+            return false;
+        if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
+            return false;
+        return best.Offer(hit.Time, hit.Normal);
+    }
+
+    /// <summary>True when a sphere of radius <paramref name="r"/> moving from <paramref name="a"/> to <paramref name="b"/> can touch <paramref name="bounds"/>.</summary>
+    public static bool Reaches(in Sphere bounds, Vector3 a, Vector3 b, float r)
+    {
+        var closest = ReferenceToi.ClosestPointOnSegment(bounds.Center, a, b);
+        float reach = bounds.Radius + r + PhysicsConstants.Epsilon;
+        return Vector3.DistanceSquared(closest, bounds.Center) <= reach * reach;
+    }
+}

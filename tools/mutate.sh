@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# Mutation testing over hand-picked faults (tools/mutants.tsv): each fault is applied, one at a time,
+# to a private copy of the repository, the copy is built (Release) and the whole test suite is run.
+# A fault is "killed" when the suite fails (or times out), "survived" when it passes, "no-build" when
+# the mutated code does not compile. The working tree is never modified.
+#
+#   tools/mutate.sh                 run every fault
+#   tools/mutate.sh T01 B04         run only these faults
+#   tools/mutate.sh --check         only check that every fault applies (its text occurs exactly once)
+#
+# Environment: MUTATE_DIR (the copy; default a new temporary directory), MUTATE_TIMEOUT (seconds per
+# test run, default 300). Results: one line per fault on stdout and in $MUTATE_DIR/results.tsv, then a
+# score per folder. Builds and test runs are sequential (one at a time).
+set -euo pipefail
+
+repo="$(cd "$(dirname "$0")/.." && pwd)"
+list="$repo/tools/mutants.tsv"
+check_only=0
+ids=()
+for arg in "$@"; do
+  if [ "$arg" = "--check" ]; then check_only=1; else ids+=("$arg"); fi
+done
+
+work="${MUTATE_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/acdream-mutate.XXXXXX")}"
+timeout_s="${MUTATE_TIMEOUT:-300}"
+copy="$work/repo"
+mkdir -p "$copy"
+# The tracked and untracked (not ignored) files of the working tree, so uncommitted tests count too.
+(cd "$repo" && git ls-files -z -co --exclude-standard | tar --null -T - -cf -) | tar -xf - -C "$copy"
+src="$copy/src/AcDream.Core.Physics"
+tests="$copy/tests/AcDream.Core.Physics.Tests"
+
+# apply FILE FIND REPLACE: replaces the single occurrence of FIND (\n and \t escapes) in FILE.
+# Exit 3 when FIND does not occur exactly once.
+apply() {
+  FIND="$2" REPLACE="$3" perl -0777 -i -pe '
+    BEGIN { ($f, $r) = map { my $s = $_; $s =~ s/\\n/\n/g; $s =~ s/\\t/\t/g; $s } ($ENV{FIND}, $ENV{REPLACE}); }
+    my $n = () = /\Q$f\E/g;
+    if ($n != 1) { print STDERR "found $n times\n"; exit 3; }
+    s/\Q$f\E/$r/;
+  ' "$1"
+}
+
+selected() {
+  [ "${#ids[@]}" -eq 0 ] && return 0
+  for x in "${ids[@]}"; do [ "$x" = "$1" ] && return 0; done
+  return 1
+}
+
+build() { dotnet build "$tests" -c Release -nologo -v q >"$work/build.log" 2>&1; }
+run_tests() { timeout "$timeout_s" dotnet test "$tests" -c Release --no-build -nologo >"$work/test.log" 2>&1; }
+
+if [ "$check_only" -eq 0 ]; then
+  echo "copy: $copy"
+  if ! build; then echo "the unmutated copy does not build; see $work/build.log" >&2; exit 1; fi
+  if ! run_tests; then echo "the unmutated suite fails; see $work/test.log" >&2; exit 1; fi
+  echo "baseline: builds and passes"
+fi
+
+results="$work/results.tsv"
+: >"$results"
+bad=0
+while IFS=$'\t' read -r id file find replace what; do
+  case "$id" in ''|'#'*) continue ;; esac
+  selected "$id" || continue
+  target="$src/$file"
+  folder="${file%%/*}"
+  cp "$target" "$work/original"
+  if ! apply "$target" "$find" "$replace" 2>"$work/apply.log"; then
+    echo "$id	$folder	not-applicable	$(cat "$work/apply.log")" | tee -a "$results"
+    cp "$work/original" "$target"
+    bad=1
+    continue
+  fi
+  if [ "$check_only" -eq 1 ]; then
+    cp "$work/original" "$target"
+    continue
+  fi
+  if ! build; then
+    outcome="no-build"; detail="$(grep -m1 -o 'error [A-Z0-9]*:.*' "$work/build.log" || true)"
+  elif run_tests; then
+    outcome="survived"; detail="$what"
+  else
+    rc=$?
+    outcome="killed"
+    if [ "$rc" -eq 124 ]; then detail="timeout"; else detail="$(grep -m1 -oE 'Failed [A-Za-z0-9_.]+' "$work/test.log" || echo "suite failed")"; fi
+  fi
+  cp "$work/original" "$target"
+  echo "$id	$folder	$outcome	$detail" | tee -a "$results"
+done <"$list"
+
+if [ "$check_only" -eq 1 ]; then
+  [ "$bad" -eq 0 ] && echo "every fault applies"
+  exit "$bad"
+fi
+# Score per folder: killed / (killed + survived); faults that do not build or apply are not counted.
+echo
+awk -F'\t' '
+  $3 == "killed" { k[$2]++ } $3 == "survived" { s[$2]++ } { f[$2] = 1 }
+  END { for (d in f) { t = k[d] + s[d]; printf "%-12s killed %d of %d (%s)\n", d, k[d], t, t ? sprintf("%.0f %%", 100 * k[d] / t) : "-" } }
+' "$results" | sort
