@@ -4,7 +4,7 @@ using BenchmarkDotNet.Running;
 
 namespace AcDream.Core.Physics.Bench;
 
-/// <summary>Entry point: <c>door</c> runs the door job; anything else goes to BenchmarkDotNet's switcher.</summary>
+/// <summary>Entry point: <c>door</c> runs the door job, <c>realcells</c> the real-cells job; anything else goes to BenchmarkDotNet's switcher.</summary>
 public static class Program
 {
     /// <summary>Runs the door job or the benchmarks selected on the command line.</summary>
@@ -12,6 +12,8 @@ public static class Program
     {
         if (args.Length > 0 && args[0] == "door")
             return DoorJob.Run(args.Skip(1).ToArray());
+        if (args.Length > 0 && args[0] == "realcells")
+            return RealCells.RealCellsJob.Run(args.Skip(1).ToArray());
         if (args.Length > 0 && args[0] == "trace")
             return DoorTrace.Run(args.Skip(1).ToArray());
         BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
