@@ -15,7 +15,8 @@ public readonly record struct FrameDiagnostics(int MoverIndex, string MoverName,
 /// <summary>
 /// Runs a scene: every mover, alone, frame by frame through one <see cref="PhysicsEngine"/>, each frame
 /// requesting the mover's current position plus that frame's offset (same cell label and orientation),
-/// as a client's per-frame motion would.
+/// as a client's per-frame motion would; a body mover's frames go through <see cref="PhysicsEngine.Step"/>
+/// with its elapsed time, desired motion and jump.
 /// </summary>
 public static class SceneRunner
 {
@@ -39,13 +40,25 @@ public static class SceneRunner
             var mover = scene.Movers[m];
             var frames = new List<TrajectoryFrame>(mover.FrameCount);
             var state = mover.Start;
+            var body = mover.StartBody;
             for (int f = 0; f < mover.FrameCount; f++)
             {
-                var target = state.Position;
-                target.Frame.Origin += mover.Motion[f];
-                var result = engine.Resolve(mover.Description, state, target);
-                frames.Add(TrajectoryFrame.From(target, result));
-                state = result.Next;
+                if (mover.IsBody)
+                {
+                    var step = mover.Steps[f];
+                    var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                    frames.Add(TrajectoryFrame.From(step, stepped));
+                    state = stepped.Next;
+                    body = stepped.Body;
+                }
+                else
+                {
+                    var target = state.Position;
+                    target.Frame.Origin += mover.Motion[f];
+                    var result = engine.Resolve(mover.Description, state, target);
+                    frames.Add(TrajectoryFrame.From(target, result));
+                    state = result.Next;
+                }
                 if (log is not null)
                 {
                     diagnostics!(new FrameDiagnostics(m, mover.Name, f, log.Events));
