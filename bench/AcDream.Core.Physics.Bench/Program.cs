@@ -4,7 +4,7 @@ using BenchmarkDotNet.Running;
 
 namespace AcDream.Core.Physics.Bench;
 
-/// <summary>Entry point: <c>door</c> runs the door job, <c>compile</c> the BSP compiler's cost job; anything else goes to BenchmarkDotNet's switcher.</summary>
+/// <summary>Entry point: <c>door</c> runs the door job, <c>compile</c> the BSP compiler's cost job, <c>registry</c> the registry's removal and move costs; anything else goes to BenchmarkDotNet's switcher.</summary>
 public static class Program
 {
     /// <summary>Runs the door job or the benchmarks selected on the command line.</summary>
@@ -14,6 +14,8 @@ public static class Program
             return DoorJob.Run(args.Skip(1).ToArray());
         if (args.Length > 0 && args[0] == "compile")
             return Compile.CompileJob.Run(args.Skip(1).ToArray());
+        if (args.Length > 0 && args[0] == "registry")
+            return Registry.RegistryJob.Run();
         if (args.Length > 0 && args[0] == "trace")
             return DoorTrace.Run(args.Skip(1).ToArray());
         BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
