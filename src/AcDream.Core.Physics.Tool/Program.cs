@@ -5,6 +5,7 @@ using System.IO;
 using System.Numerics;
 using System.Text;
 using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 
@@ -39,12 +40,15 @@ public static class Program
           plot SCENE [TRAJ] --out FILE.png
                                         draw the scene (top and side views) with each
                                         mover's path coloured by outcome
+          parity DIR                    check the engine against every parity file (*.json.gz) in
+                                        DIR: one line per file; exit 1 when a file misses its
+                                        threshold
           help                          this text
 
         SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
         Query coordinates are landblock-local to the scene's first landblock.
         --diag prints each frame's structured diagnostics events.
-        Exit codes: 0 success, 1 replay mismatch, 2 usage error or bad file.
+        Exit codes: 0 success, 1 replay or parity mismatch, 2 usage error or bad file.
         """;
 
     /// <summary>Runs the tool.</summary>
@@ -114,6 +118,9 @@ public static class Program
                     if (options.Out is null)
                         throw new UsageException("plot needs --out FILE.png");
                     return PlotCommand.Run(LoadScene(options.Positional[0]), options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null, options.Out, stdout);
+                case "parity":
+                    Expect(options, 1, "parity needs DIR");
+                    return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
                 default:
                     throw new UsageException($"unknown command '{command}'");
             }

@@ -517,7 +517,7 @@ public static class SceneLoader
         private static Vector3 Speed(JsonElement e, string path)
         {
             var v = JsonRead.Vec3(e, path);
-            float max = InputLimits.MaxCoordinate;
+            float max = BodyGuard.MaxSpeed;
             if (!(MathF.Abs(v.X) <= max && MathF.Abs(v.Y) <= max && MathF.Abs(v.Z) <= max))
                 throw new SceneFormatException(path, $"must be within ±{max} per second on each axis, got {v}.");
             return v;
@@ -560,7 +560,7 @@ public static class SceneLoader
                 }
                 var velocity = o.Opt("velocity") is { } v ? Speed(v, o.Child("velocity")) : Vector3.Zero;
                 float jump = o.Float("jump", 0f);
-                if (!(jump >= 0f && jump <= InputLimits.MaxCoordinate))
+                if (!(jump >= 0f && jump <= BodyGuard.MaxSpeed))
                     throw new SceneFormatException(o.Child("jump"), $"must be a vertical speed of zero or more m/s, got {jump}.");
                 int count = o.Int("count", 1);
                 o.End();
