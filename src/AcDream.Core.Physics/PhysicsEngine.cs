@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics;
 /// One engine per thread: it reuses one <see cref="Transition"/> and allocates nothing per call once warm.
 /// The world may be shared by engines on several threads while nobody modifies it.
 /// </summary>
-public sealed class PhysicsEngine
+public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
     private uint[] _collided = new uint[8];
@@ -42,25 +42,48 @@ public sealed class PhysicsEngine
     /// in the same or a neighbouring landblock's frame, labelled with the start cell or any cell of the
     /// target's landblock). Throws <see cref="ArgumentException"/> naming the field, before anything is
     /// changed, for non-finite or out-of-range input (coordinates beyond ±<see cref="InputLimits.MaxCoordinate"/>),
-    /// zero-length rotations, a contact plane whose normal is not a unit vector, and unknown cells (the
-    /// state's cell, the target's cell label and a non-zero contact-plane cell must all be in the world).
+    /// zero-length rotations or rotations whose length overflows, a contact plane whose normal is not a unit
+    /// vector, unknown cells (the state's cell, the target's cell label and a non-zero contact-plane cell
+    /// must all be in the world), and a state whose origin lies more than
+    /// <see cref="InputLimits.MaxDistanceFromCell"/> plus the mover's reach outside its cell.
     /// A motion cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps (kilometres in one
     /// frame) is not an error: as in retail it is refused at once, with <see cref="MoveResult.Succeeded"/>
     /// false and <see cref="MoveResult.Next"/> equal to <paramref name="state"/>.
     /// Thread safety: one engine per thread; engines on several threads may share a world as long as
     /// nothing registers, moves or unregisters objects or adds cells meanwhile.
     /// </summary>
-    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
+    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target) => ResolveCore(mover, state, target, 0);
+
+    /// <summary>
+    /// <see cref="Resolve"/> with the transition's stationary-fall counter seeded, as retail's
+    /// CPhysicsObj::transition seeds it from the object's transient state (0 for a mover without a body).
+    /// </summary>
+    private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        Guard.Frame(state.Position.Frame, "state.position");
+        var cell = ValidateState(mover, state);
         Guard.Frame(target.Frame, "target");
         var begin = state.Position;
         begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
         target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
+        _transition.World.Cells.GetRequired(target.CellId, "target.cell");
+
+        var t = _transition;
+        Prepare(t, mover, state);
+        t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
+        t.SpherePath.InitPath(cell, begin, target);
+        t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
+        bool ok = t.FindTransitionalPosition();
+        return Collect(t, ok, state);
+    }
+
+    /// <summary>Checks a mover's state (position, cell, contact plane, sliding normal); returns its cell.</summary>
+    private World.Cell ValidateState(MoverDescription mover, in MoverState state)
+    {
+        Guard.Frame(state.Position.Frame, "state.position");
         var cells = _transition.World.Cells;
-        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
-        cells.GetRequired(target.CellId, "target.cell");
+        var cell = cells.GetRequired(state.Position.CellId, "state.position.cell");
+        Guard.NearCell(cell.DistanceOutside(state.Position.Frame.Origin), mover.Reach, state.Position.CellId, state.Position.Frame.Origin, "state.position.origin");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
             Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
@@ -70,13 +93,7 @@ public sealed class PhysicsEngine
         }
         if (state.SlidingNormalValid)
             Guard.Finite(state.SlidingNormal, "state.slidingNormal");
-
-        var t = _transition;
-        Prepare(t, mover, state);
-        t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
-        t.SpherePath.InitPath(cell, begin, target);
-        bool ok = t.FindTransitionalPosition();
-        return Collect(t, ok, state);
+        return cell;
     }
 
     /// <summary>
@@ -90,6 +107,7 @@ public sealed class PhysicsEngine
         Guard.Frame(position.Frame, "position");
         position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
         var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
+        Guard.NearCell(cell.DistanceOutside(position.Frame.Origin), mover.Reach, position.CellId, position.Frame.Origin, "position.origin");
         var t = _transition;
         var airborne = MoverState.Airborne(position);
         Prepare(t, mover, airborne);
