@@ -47,12 +47,19 @@ selected() {
   return 1
 }
 
-build() { dotnet build "$tests" -c Release -nologo -v q >"$work/build.log" 2>&1; }
-run_tests() { timeout "$timeout_s" dotnet test "$tests" -c Release --no-build -nologo >"$work/test.log" 2>&1; }
+# The baseline builds everything; a mutant rebuilds only the library (its public surface is unchanged,
+# so nothing that references it needs recompiling) and copies it next to the tests.
+build_all() { dotnet build "$tests" -c Release -nologo -v q >"$work/build.log" 2>&1; }
+build() {
+  dotnet build "$src/AcDream.Core.Physics.csproj" -c Release --no-restore -nologo -v q >"$work/build.log" 2>&1 &&
+    cp "$src/bin/Release/net10.0/AcDream.Core.Physics.dll" "$tests/bin/Release/net10.0/"
+}
+# The whole suite; xUnit stops at the first failing test (a killed mutant needs no more).
+run_tests() { timeout "$timeout_s" dotnet test "$tests" -c Release --no-build -nologo -- xUnit.StopOnFail=true >"$work/test.log" 2>&1; }
 
 if [ "$check_only" -eq 0 ]; then
   echo "copy: $copy"
-  if ! build; then echo "the unmutated copy does not build; see $work/build.log" >&2; exit 1; fi
+  if ! build_all; then echo "the unmutated copy does not build; see $work/build.log" >&2; exit 1; fi
   if ! run_tests; then echo "the unmutated suite fails; see $work/test.log" >&2; exit 1; fi
   echo "baseline: builds and passes"
 fi

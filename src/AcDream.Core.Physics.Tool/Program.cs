@@ -28,9 +28,21 @@ public static class Program
           replay SCENE TRAJ [--tolerance METRES] [--diag]
                                         re-run a recorded trajectory; exit 0 when it matches,
                                         1 with the first difference
+          query SCENE floor X Y Z [DROP]
+                                        the highest walkable surface at or below the point
+                                        (within DROP metres, default 100)
+          query SCENE cell X Y Z        the cell that holds the point (indoor first)
+          query SCENE near X Y Z R      the objects overlapping a sphere
+          query SCENE cast X0 Y0 Z0 X1 Y1 Z1 R
+                                        the first contact of a sphere swept from one point
+                                        to the other (R 0: a ray)
+          plot SCENE [TRAJ] --out FILE.png
+                                        draw the scene (top and side views) with each
+                                        mover's path coloured by outcome
           help                          this text
 
         SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
+        Query coordinates are landblock-local to the scene's first landblock.
         --diag prints each frame's structured diagnostics events.
         Exit codes: 0 success, 1 replay mismatch, 2 usage error or bad file.
         """;
@@ -38,7 +50,7 @@ public static class Program
     /// <summary>Runs the tool.</summary>
     public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
 
-    private sealed class UsageException(string message) : Exception(message);
+    internal sealed class UsageException(string message) : Exception(message);
 
     private sealed class Options
     {
@@ -92,6 +104,16 @@ public static class Program
                 case "replay":
                     Expect(options, 2, "replay needs SCENE and TRAJ");
                     return Replay(options, stdout);
+                case "query":
+                    if (options.Positional.Count < 2)
+                        throw new UsageException("query needs SCENE and floor, cell, near or cast");
+                    return QueryCommand.Run(LoadScene(options.Positional[0]), options.Positional.ToArray().AsSpan(1), stdout);
+                case "plot":
+                    if (options.Positional.Count is < 1 or > 2)
+                        throw new UsageException(options.Positional.Count < 1 ? "plot needs SCENE" : $"unexpected argument '{options.Positional[2]}'");
+                    if (options.Out is null)
+                        throw new UsageException("plot needs --out FILE.png");
+                    return PlotCommand.Run(LoadScene(options.Positional[0]), options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null, options.Out, stdout);
                 default:
                     throw new UsageException($"unknown command '{command}'");
             }
@@ -196,15 +218,7 @@ public static class Program
     {
         var scene = LoadScene(o.Positional[0]);
         string path = o.Positional[1];
-        Trajectory trajectory;
-        try
-        {
-            trajectory = Trajectory.LoadFile(path);
-        }
-        catch (SceneFormatException ex)
-        {
-            throw new SceneFormatException(string.Empty, $"{path}: {ex.Message}", ex);
-        }
+        var trajectory = LoadTrajectory(path);
         Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
         var result = TrajectoryReplay.Replay(scene, trajectory, o.Tolerance, diag);
         foreach (string note in result.Notes)
@@ -217,6 +231,18 @@ public static class Program
         stdout.WriteLine($"{scene.Name}: replay differs after {result.FramesCompared} matching frames");
         stdout.WriteLine($"  {result.FirstDifference}");
         return 1;
+    }
+
+    private static Trajectory LoadTrajectory(string path)
+    {
+        try
+        {
+            return Trajectory.LoadFile(path);
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException(string.Empty, $"{path}: {ex.Message}", ex);
+        }
     }
 
     private static string F(float v) => v.ToString("0.#####", CultureInfo.InvariantCulture);

@@ -43,6 +43,8 @@ public sealed class MoverDescription
             throw new ArgumentException("mover.flags: Contact and OnWalkable are per-frame state; pass them in MoverState.", nameof(flags));
         ObjectId = objectId;
         _spheres = spheres.ToArray();
+        foreach (var sphere in spheres)
+            Reach = MathF.Max(Reach, (sphere.Center.Length() + sphere.Radius) * scale);
         StepUpHeight = stepUpHeight;
         StepDownHeight = stepDownHeight;
         PhysicsState = physicsState;
@@ -50,6 +52,9 @@ public sealed class MoverDescription
         Scale = scale;
         TargetId = targetId;
     }
+
+    /// <summary>The farthest point of the (scaled) spheres from the mover's origin, in metres.</summary>
+    internal float Reach { get; }
 
     /// <summary>The retail player setup's step-down height (Setup 0x02000001: step-up 0.6, step-down 1.5; holtburger notes).</summary>
     public const float PlayerStepDownHeight = 1.5f;

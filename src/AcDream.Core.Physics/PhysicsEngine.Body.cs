@@ -37,7 +37,7 @@ public sealed partial class PhysicsEngine
         float jumpVelocity = 0f)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        ValidateState(state);
+        ValidateState(mover, state);
         BodyGuard.Check(body, elapsed, desiredVelocity, jumpVelocity);
 
         var s = state;

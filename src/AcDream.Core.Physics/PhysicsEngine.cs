@@ -42,8 +42,10 @@ public sealed partial class PhysicsEngine
     /// in the same or a neighbouring landblock's frame, labelled with the start cell or any cell of the
     /// target's landblock). Throws <see cref="ArgumentException"/> naming the field, before anything is
     /// changed, for non-finite or out-of-range input (coordinates beyond ±<see cref="InputLimits.MaxCoordinate"/>),
-    /// zero-length rotations, a contact plane whose normal is not a unit vector, and unknown cells (the
-    /// state's cell, the target's cell label and a non-zero contact-plane cell must all be in the world).
+    /// zero-length rotations or rotations whose length overflows, a contact plane whose normal is not a unit
+    /// vector, unknown cells (the state's cell, the target's cell label and a non-zero contact-plane cell
+    /// must all be in the world), and a state whose origin lies more than
+    /// <see cref="InputLimits.MaxDistanceFromCell"/> plus the mover's reach outside its cell.
     /// A motion cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps (kilometres in one
     /// frame) is not an error: as in retail it is refused at once, with <see cref="MoveResult.Succeeded"/>
     /// false and <see cref="MoveResult.Next"/> equal to <paramref name="state"/>.
@@ -59,7 +61,7 @@ public sealed partial class PhysicsEngine
     private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        var cell = ValidateState(state);
+        var cell = ValidateState(mover, state);
         Guard.Frame(target.Frame, "target");
         var begin = state.Position;
         begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
@@ -76,11 +78,12 @@ public sealed partial class PhysicsEngine
     }
 
     /// <summary>Checks a mover's state (position, cell, contact plane, sliding normal); returns its cell.</summary>
-    private World.Cell ValidateState(in MoverState state)
+    private World.Cell ValidateState(MoverDescription mover, in MoverState state)
     {
         Guard.Frame(state.Position.Frame, "state.position");
         var cells = _transition.World.Cells;
         var cell = cells.GetRequired(state.Position.CellId, "state.position.cell");
+        Guard.NearCell(cell.DistanceOutside(state.Position.Frame.Origin), mover.Reach, state.Position.CellId, state.Position.Frame.Origin, "state.position.origin");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
             Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
@@ -104,6 +107,7 @@ public sealed partial class PhysicsEngine
         Guard.Frame(position.Frame, "position");
         position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
         var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
+        Guard.NearCell(cell.DistanceOutside(position.Frame.Origin), mover.Reach, position.CellId, position.Frame.Origin, "position.origin");
         var t = _transition;
         var airborne = MoverState.Airborne(position);
         Prepare(t, mover, airborne);

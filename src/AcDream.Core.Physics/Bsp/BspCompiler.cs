@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Bsp;
 
@@ -52,7 +53,7 @@ namespace AcDream.Core.Physics.Bsp;
 /// <para>
 /// Nodes are numbered depth first (node, front subtree, back subtree); the tree's polygon list holds the
 /// (possibly split) polygons in leaf order, an unsplit input polygon keeping its instance.
-/// Recursion depth is at most the number of distinct planes, fine for object-sized meshes.
+/// Recursion depth is at most the number of distinct planes and is limited to <see cref="InputLimits.MaxBspDepth"/>.
 /// </para>
 /// </remarks>
 public static class BspCompiler
@@ -82,12 +83,15 @@ public static class BspCompiler
     /// <param name="polygons">The polygons, counter-clockwise seen from their front (solids: outward).</param>
     /// <param name="name">A name for error messages.</param>
     /// <returns>A validated tree built with <see cref="BspTree.Create"/>.</returns>
-    /// <exception cref="ArgumentException">The list is null or empty, or an entry is null.</exception>
+    /// <exception cref="ArgumentException">The list is null or empty, an entry is null, the list holds more than
+    /// <see cref="InputLimits.MaxCompilePolygons"/> polygons, or the tree would be deeper than <see cref="InputLimits.MaxBspDepth"/>.</exception>
     public static BspTree Compile(IReadOnlyList<Polygon> polygons, string name = "polygons")
     {
         ArgumentNullException.ThrowIfNull(polygons);
         if (polygons.Count == 0)
             throw new ArgumentException($"{name}: at least one polygon is needed to compile a BSP tree.", nameof(polygons));
+        if (polygons.Count > InputLimits.MaxCompilePolygons)
+            throw new ArgumentException($"{name}: at most {InputLimits.MaxCompilePolygons} polygons can be compiled into one BSP tree (InputLimits.MaxCompilePolygons), got {polygons.Count}; split the mesh into several parts.", nameof(polygons));
         var set = new List<Polygon>(polygons.Count);
         var min = new Vector3(float.MaxValue);
         var max = new Vector3(float.MinValue);
@@ -119,6 +123,9 @@ public static class BspCompiler
         // Each split uses up one plane of the input; deeper than that means float drift broke coplanarity.
         if (path.Count > 2 * all.Count + 64)
             throw new InvalidOperationException($"{name}: BSP compile did not converge (depth {path.Count}); the polygons may be too far from the origin for float precision.");
+        // Refused before the recursion gets deep: the tree could not be used anyway (BspTree.Create).
+        if (path.Count >= InputLimits.MaxBspDepth)
+            throw new ArgumentException($"{name}: the compiled BSP tree would be deeper than {InputLimits.MaxBspDepth} levels (InputLimits.MaxBspDepth); a convex solid needs one level per distinct face plane, so split a mesh with that many planes into several parts.", nameof(all));
         int best = -1;
         int bestScore = int.MaxValue;
         for (int i = 0; i < set.Count; i++)
@@ -298,7 +305,7 @@ public static class BspCompiler
     {
         if (points.Count < 3 || Area(points.ToArray()) < MinFragmentArea)
             return null;
-        return new Polygon(points.ToArray(), sides, name + " (split piece)");
+        return new Polygon(points.ToArray(), sides, name + " (split piece)", cutFromValidPolygon: true);
     }
 
     private static float Area(ReadOnlySpan<Vector3> v)

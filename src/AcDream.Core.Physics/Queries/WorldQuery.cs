@@ -234,17 +234,15 @@ public sealed class WorldQuery
             }
             if ((layers & (QueryLayers.Objects | QueryLayers.EtherealObjects)) == 0)
                 continue;
-            var rows = World.Objects.RowsInCell(cell.Id);
-            for (int start = 0; start < rows.Length;)
+            var objects = World.Objects.ObjectsInCell(cell.Id);
+            for (int o = 0; o < objects.Count; o++)
             {
-                int end = ObjectEnd(rows, start);
-                if (Selected(rows[start], layers, ignoreId, out var rung))
-                {
-                    for (int i = start; i < end; i++)
-                        if (rows[i].Kind == rung && SweepRow(rows[i], frameCell, c, d, r, walkableOnly, ref best))
-                            (kind, cellId, objectId) = (SurfaceKind.Object, rows[i].Position.CellId, rows[i].EntityId);
-                }
-                start = end;
+                var rows = objects.RowsOf(o);
+                if (rows.Length == 0 || !Selected(rows[0], layers, ignoreId, out var rung))
+                    continue;
+                for (int i = 0; i < rows.Length; i++)
+                    if (rows[i].Kind == rung && SweepRow(rows[i], frameCell, c, d, r, walkableOnly, ref best))
+                        (kind, cellId, objectId) = (SurfaceKind.Object, rows[i].Position.CellId, rows[i].EntityId);
             }
         }
         if (!best.Found)
@@ -307,23 +305,23 @@ public sealed class WorldQuery
         int count = 0;
         foreach (var cell in _cells)
         {
-            var rows = World.Objects.RowsInCell(cell.Id);
-            for (int start = 0; start < rows.Length && count < results.Length;)
+            var objects = World.Objects.ObjectsInCell(cell.Id);
+            for (int o = 0; o < objects.Count && count < results.Length; o++)
             {
-                int end = ObjectEnd(rows, start);
-                uint id = rows[start].EntityId;
-                if (Selected(rows[start], layers, ignoreId, out var rung) && !Listed(results[..count], id))
+                var rows = objects.RowsOf(o);
+                if (rows.Length == 0)
+                    continue;
+                uint id = rows[0].EntityId;
+                if (!Selected(rows[0], layers, ignoreId, out var rung) || Listed(results[..count], id))
+                    continue;
+                for (int i = 0; i < rows.Length; i++)
                 {
-                    for (int i = start; i < end; i++)
-                    {
-                        ref readonly var row = ref rows[i];
-                        if (row.Kind != rung || !Overlaps(row, frameCell, c, extent, isBox))
-                            continue;
-                        results[count++] = new ObjectOverlap(id, row.Kind, row.Shape.Index, row.Position.CellId, row.State);
-                        break;
-                    }
+                    ref readonly var row = ref rows[i];
+                    if (row.Kind != rung || !Overlaps(row, frameCell, c, extent, isBox))
+                        continue;
+                    results[count++] = new ObjectOverlap(id, row.Kind, row.Shape.Index, row.Position.CellId, row.State);
+                    break;
                 }
-                start = end;
             }
         }
         return count;
@@ -376,15 +374,6 @@ public sealed class WorldQuery
             if (o.ObjectId == id)
                 return true;
         return false;
-    }
-
-    /// <summary>The end (exclusive) of the object whose rows start at <paramref name="start"/>: rows of one object are contiguous.</summary>
-    private static int ObjectEnd(ReadOnlySpan<ShadowEntry> rows, int start)
-    {
-        int end = start + 1;
-        while (end < rows.Length && rows[end].EntityId == rows[start].EntityId)
-            end++;
-        return end;
     }
 
     /// <summary>Whether the layers take this object, and which kind of its shapes it collides by (retail's dispatch rung).</summary>

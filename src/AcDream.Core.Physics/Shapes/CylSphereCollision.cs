@@ -221,7 +221,7 @@ internal static class CylSphereCollision
         CollisionNormal(cylinder, path, checkSphere, disp, radsum, 0, out Vector3 normal);
         if (VectorMath.NormalizeCheckSmall(ref normal))
             return TransitionState.Collided;
-        Vector3 stepNormal = path.LocalSpacePos.Frame.LocalToGlobalVec(normal);
+        Vector3 stepNormal = path.LocalSpacePos.LocalToGlobalVec(normal);
         return transition.StepUp(stepNormal) ? TransitionState.OK : transition.StepUpSlide();
     }
 

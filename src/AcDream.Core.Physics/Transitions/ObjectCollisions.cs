@@ -56,31 +56,29 @@ internal static class ObjectCollisions
     }
 
     /// <summary>
-    /// Collides with every object in a cell's rows, in list order (retail CObjCell::find_obj_collisions
+    /// Collides with every object listed in a cell, in list order (retail CObjCell::find_obj_collisions
     /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
-    /// non-OK result returns. Rows of one object are contiguous. An initial placement tests no object.
+    /// non-OK result returns. An initial placement tests no object.
     /// </summary>
-    public static TransitionState FindInCell(Transition transition, ReadOnlySpan<ShadowEntry> rows)
+    internal static TransitionState FindInCell(Transition transition, ShadowObjectRegistry.CellObjects objects)
     {
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             return TransitionState.OK;
-        uint self = transition.ObjectInfo.ObjectId;
-        int start = 0;
-        while (start < rows.Length)
+        for (int i = 0; i < objects.Count; i++)
         {
-            uint id = rows[start].EntityId;
-            int end = start + 1;
-            while (end < rows.Length && rows[end].EntityId == id)
-                end++;
-            if (id != self || self == 0)
-            {
-                var state = FindObjectCollisions(transition, rows.Slice(start, end - start));
-                if (state != TransitionState.OK)
-                    return state;
-            }
-            start = end;
+            var state = FindObjectCollisionsUnlessSelf(transition, objects.RowsOf(i));
+            if (state != TransitionState.OK)
+                return state;
         }
         return TransitionState.OK;
+    }
+
+    private static TransitionState FindObjectCollisionsUnlessSelf(Transition transition, ReadOnlySpan<ShadowEntry> shapes)
+    {
+        uint self = transition.ObjectInfo.ObjectId;
+        if (shapes.Length == 0 || (shapes[0].EntityId == self && self != 0))
+            return TransitionState.OK;
+        return FindObjectCollisions(transition, shapes);
     }
 
     /// <summary>One object (all its rows): the retail ladder BSP-only → cylspheres → spheres → nothing.</summary>

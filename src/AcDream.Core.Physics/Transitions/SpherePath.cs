@@ -182,9 +182,10 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
+        var matrix = CurPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
-            GlobalCurrCenter[i].Center = CurPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalCurrCenter[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin);
             GlobalCurrCenter[i].Radius = LocalSphere[i].Radius;
         }
     }
@@ -192,12 +193,13 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
     {
+        var matrix = CheckPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalSphere[i].Radius = LocalSphere[i].Radius;
-            GlobalSphere[i].Center = CheckPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalSphere[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CheckPos.Frame.Origin);
         }
-        GlobalLowPoint = CheckPos.LocalToGlobal(LocalLowPoint);
+        GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
     }
 
     private void ShiftGlobalSpheres(Vector3 offset)
@@ -214,15 +216,18 @@ internal sealed class SpherePath
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
         float invScale = 1.0f / scale;
+        var spaceMatrix = space.Frame.Matrix;
+        var curMatrix = CurPos.Frame.Matrix;
+        var checkMatrix = CheckPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
-            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(CurPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(spaceMatrix, CurPos, curMatrix, LocalSphere[i].Center) * invScale;
             LocalSpaceCurrCenter[i].Radius = LocalSphere[i].Radius * invScale;
             LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
-            LocalSpaceSphere[i].Center = space.LocalToLocal(CheckPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceSphere[i].Center = space.LocalToLocal(spaceMatrix, CheckPos, checkMatrix, LocalSphere[i].Center) * invScale;
         }
         LocalSpacePos = space;
-        LocalSpaceZ = space.Frame.GlobalToLocalVec(Vector3.UnitZ);
+        LocalSpaceZ = spaceMatrix.PositionToLocal(Vector3.UnitZ);
         LocalSpaceLowPoint = LocalSpaceSphere[0].Center - LocalSpaceZ * LocalSpaceSphere[0].Radius;
     }
 
