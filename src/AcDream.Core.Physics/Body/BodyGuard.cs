@@ -10,8 +10,11 @@ namespace AcDream.Core.Physics.Body;
 /// </summary>
 internal static class BodyGuard
 {
-    /// <summary>The largest speed component accepted, m/s (the library's coordinate limit per second; retail caps speed at 50).</summary>
-    public const float MaxSpeed = InputLimits.MaxCoordinate;
+    /// <summary>
+    /// The largest speed component accepted, m/s: the library's size limit per second (retail caps a body's
+    /// speed at 50), so one 0.2 s quantum moves at most 200 m and its target stays a valid coordinate.
+    /// </summary>
+    public const float MaxSpeed = InputLimits.MaxExtent;
 
     public static void Check(in BodyState body, double elapsed, Vector3 desiredVelocity, float jumpVelocity)
     {

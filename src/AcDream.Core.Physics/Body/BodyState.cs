@@ -44,7 +44,8 @@ public struct BodyState
     /// <summary>
     /// The acceleration of the body's next quantum, m/s² (retail m_accelerationVector): gravity for a body
     /// with the Gravity state that is not standing on walkable ground, else zero (calc_acceleration).
-    /// The engine recomputes it from the contact state at every step; a value written here is ignored.
+    /// The engine recomputes it from the contact state at the start of every step, as retail recomputes it on
+    /// every change of contact, walkable ground or the Gravity state.
     /// </summary>
     public Vector3 Acceleration { readonly get; internal set; }
 

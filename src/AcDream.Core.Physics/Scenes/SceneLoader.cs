@@ -97,11 +97,15 @@ public static class SceneLoader
                 ReadObject(value, path);
             var movers = new List<SceneMover>();
             var names = new HashSet<string>(StringComparer.Ordinal);
+            long totalFrames = 0;
             foreach (var (value, path) in o.Array("movers"))
             {
                 var mover = ReadMover(value, path);
                 if (!names.Add(mover.Name))
                     throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
+                totalFrames += mover.FrameCount;
+                if (totalFrames > InputLimits.MaxSceneFrames)
+                    throw new SceneFormatException(path + (mover.IsBody ? ".steps" : ".motion"), $"the scene's movers walk more than {InputLimits.MaxSceneFrames} frames in all (InputLimits.MaxSceneFrames, movers × frames).");
                 movers.Add(mover);
             }
             if (movers.Count == 0)
@@ -480,19 +484,20 @@ public static class SceneLoader
             Vector3[] motion = [];
             SceneStep[] steps = [];
             var body = BodyState.Creature();
+            var itemStarts = new List<int>();
             if (o.Opt("steps") is { } st2)
             {
-                steps = ReadSteps(st2, o.Child("steps"));
+                steps = ReadSteps(st2, o.Child("steps"), itemStarts);
                 if (o.Opt("body") is { } b)
                     body = ReadBody(b, o.Child("body"));
             }
             else
             {
-                motion = ReadMotion(o.Req("motion"), o.Child("motion"));
+                motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
             }
             o.End();
             var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
-            return new SceneMover(name, description, start, motion, steps, body);
+            return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts]);
         }
 
         /// <summary>A body's start: velocity, omega, friction, elasticity (retail defaults) and whether it has a motion interpreter (default true).</summary>
@@ -512,7 +517,7 @@ public static class SceneLoader
         private static Vector3 Speed(JsonElement e, string path)
         {
             var v = JsonRead.Vec3(e, path);
-            float max = InputLimits.MaxCoordinate;
+            float max = BodyGuard.MaxSpeed;
             if (!(MathF.Abs(v.X) <= max && MathF.Abs(v.Y) <= max && MathF.Abs(v.Z) <= max))
                 throw new SceneFormatException(path, $"must be within ±{max} per second on each axis, got {v}.");
             return v;
@@ -530,11 +535,12 @@ public static class SceneLoader
         /// A body mover's frames: each <c>{ "dt": seconds | "hz": frames per second, "velocity": [..], "jump": m/s, "count": n }</c>
         /// (velocity and jump default to zero, count to 1).
         /// </summary>
-        private static SceneStep[] ReadSteps(JsonElement e, string path)
+        private static SceneStep[] ReadSteps(JsonElement e, string path, List<int> itemStarts)
         {
             var frames = new List<SceneStep>();
             foreach (var (value, p) in JsonRead.Array(e, path))
             {
+                itemStarts.Add(frames.Count);
                 var o = new JsonObj(value, p);
                 if (o.Has("dt") == o.Has("hz"))
                     throw new SceneFormatException(p, "a step needs exactly one of \"dt\" (seconds) or \"hz\" (frames per second).");
@@ -554,7 +560,7 @@ public static class SceneLoader
                 }
                 var velocity = o.Opt("velocity") is { } v ? Speed(v, o.Child("velocity")) : Vector3.Zero;
                 float jump = o.Float("jump", 0f);
-                if (!(jump >= 0f && jump <= InputLimits.MaxCoordinate))
+                if (!(jump >= 0f && jump <= BodyGuard.MaxSpeed))
                     throw new SceneFormatException(o.Child("jump"), $"must be a vertical speed of zero or more m/s, got {jump}.");
                 int count = o.Int("count", 1);
                 o.End();
@@ -570,11 +576,12 @@ public static class SceneLoader
             return [.. frames];
         }
 
-        private static Vector3[] ReadMotion(JsonElement e, string path)
+        private static Vector3[] ReadMotion(JsonElement e, string path, List<int> itemStarts)
         {
             var frames = new List<Vector3>();
             foreach (var (value, p) in JsonRead.Array(e, path))
             {
+                itemStarts.Add(frames.Count);
                 if (value.ValueKind == JsonValueKind.Array)
                 {
                     frames.Add(JsonRead.Vec3(value, p));

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 
@@ -123,6 +124,7 @@ internal sealed class SpherePath
         WalkableCheckPos = default;
         Walkable = null;
         PlacementAllowsSliding = true;
+        _currCentersValid = false;
     }
 
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
@@ -154,6 +156,7 @@ internal sealed class SpherePath
         for (int i = 0; i < NumSphere; i++)
             LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
+        _currCentersValid = false;
     }
 
     /// <summary>Moves the check position and its spheres by an offset.</summary>
@@ -188,11 +191,24 @@ internal sealed class SpherePath
             GlobalCurrCenter[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin);
             GlobalCurrCenter[i].Radius = LocalSphere[i].Radius;
         }
+        // Retail sets the check position to the current one right after this (init_path, and accepting a
+        // sub-step); remember what was computed so that CacheGlobalSphere can copy it instead.
+        _currLowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
+        _currCentersFor = CurPos;
+        _currCentersValid = true;
     }
 
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
     {
+        if (_currCentersValid && SameBits(CheckPos, _currCentersFor))
+        {
+            // The same transforms of the same inputs: copying gives the very same bits.
+            for (int i = 0; i < NumSphere; i++)
+                GlobalSphere[i] = GlobalCurrCenter[i];
+            GlobalLowPoint = _currLowPoint;
+            return;
+        }
         var matrix = CheckPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
@@ -201,6 +217,17 @@ internal sealed class SpherePath
         }
         GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
     }
+
+    // What CacheGlobalCurrCenter last computed, and for which position (valid until the spheres change).
+    private Position _currCentersFor;
+    private Vector3 _currLowPoint;
+    private bool _currCentersValid;
+
+    /// <summary>True when two positions are identical bit for bit (so any function of them gives identical results).</summary>
+    internal static bool SameBits(in Position a, in Position b) =>
+        a.CellId == b.CellId
+        && a.Frame.Origin.AsVector128().AsInt32().Equals(b.Frame.Origin.AsVector128().AsInt32())
+        && a.Frame.Orientation.AsVector128().AsInt32().Equals(b.Frame.Orientation.AsVector128().AsInt32());
 
     private void ShiftGlobalSpheres(Vector3 offset)
     {
