@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics;
 /// One engine per thread: it reuses one <see cref="Transition"/> and allocates nothing per call once warm.
 /// The world may be shared by engines on several threads while nobody modifies it.
 /// </summary>
-public sealed class PhysicsEngine
+public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
     private uint[] _collided = new uint[8];
@@ -52,35 +52,52 @@ public sealed class PhysicsEngine
     /// Thread safety: one engine per thread; engines on several threads may share a world as long as
     /// nothing registers, moves or unregisters objects or adds cells meanwhile.
     /// </summary>
-    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
+    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target) => ResolveCore(mover, state, target, 0);
+
+    /// <summary>
+    /// <see cref="Resolve"/> with the transition's stationary-fall counter seeded, as retail's
+    /// CPhysicsObj::transition seeds it from the object's transient state (0 for a mover without a body).
+    /// </summary>
+    private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
         var begin = state.Position;
         Guard.Pose(ref begin.Frame, "state.position");
         Guard.Pose(ref target.Frame, "target");
-        // The cell ids are usually one and the same: look each distinct id up once.
-        var cells = _transition.World.Cells;
-        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
-        Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
-        if (target.CellId != begin.CellId)
-            cells.GetRequired(target.CellId, "target.cell");
-        if (state.Contact || state.ContactPlaneCellId != 0)
-        {
-            Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
-            Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
-            uint planeCell = state.ContactPlaneCellId;
-            if (planeCell != 0 && planeCell != begin.CellId && planeCell != target.CellId)
-                cells.GetRequired(planeCell, "state.contactPlaneCellId");
-        }
-        if (state.SlidingNormalValid)
-            Guard.Finite(state.SlidingNormal, "state.slidingNormal");
+        var cell = ValidateState(mover, state, begin, target.CellId);
 
         var t = _transition;
         Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
         t.SpherePath.InitPath(cell, in begin, in target);
+        t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition();
         return Collect(t, ok, state);
+    }
+
+    /// <summary>
+    /// Checks a mover's state (its pose already checked into <paramref name="begin"/>: cell, distance from
+    /// it, contact plane, sliding normal) and that <paramref name="targetCellId"/> is loaded; returns the
+    /// state's cell. The cell ids are usually one and the same: each distinct id is looked up once.
+    /// </summary>
+    private World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
+    {
+        var cells = _transition.World.Cells;
+        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
+        if (targetCellId != begin.CellId)
+            cells.GetRequired(targetCellId, "target.cell");
+        if (state.Contact || state.ContactPlaneCellId != 0)
+        {
+            Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
+            Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
+            uint planeCell = state.ContactPlaneCellId;
+            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId)
+                cells.GetRequired(planeCell, "state.contactPlaneCellId");
+        }
+        if (state.SlidingNormalValid)
+            Guard.Finite(state.SlidingNormal, "state.slidingNormal");
+        return cell;
     }
 
     /// <summary>

@@ -133,6 +133,27 @@ public sealed class ShadowObjectRegistry
     }
 
     /// <summary>
+    /// Registers an object again with its shapes, scale and flags at another position and state
+    /// (HasPhysicsBsp stays when it was derived from the setup). Used to place a scene's object the way
+    /// a parity file says; on failure the object stays as it was.
+    /// </summary>
+    internal void Replace(uint entityId, Position position, PhysicsState state)
+    {
+        if (!_objects.TryGetValue(entityId, out var old))
+            throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+        Unregister(entityId);
+        try
+        {
+            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags);
+        }
+        catch
+        {
+            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags);
+            throw;
+        }
+    }
+
+    /// <summary>
     /// Removes an object; false when it was not registered. In each of its cells the cell's last object
     /// takes its place (retail order, see <see cref="RemoveFromCells"/>); the cost is constant per cell.
     /// </summary>
