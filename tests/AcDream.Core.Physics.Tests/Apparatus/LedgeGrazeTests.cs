@@ -1,4 +1,5 @@
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
@@ -119,6 +120,52 @@ public class LedgeGrazeTests
         var back = walker.Step(new Vector3(0, -2f * Dt, 0));
         Assert.True(back.Succeeded);
         Assert.True(walker.Origin.Y < stuck.Y - 0.05f, $"y = {walker.Origin.Y}");
+    }
+
+    /// <summary>
+    /// A body-driven client (<see cref="PhysicsEngine.Step"/>, retail update_object) sees the same: walking at
+    /// 2 m/s it stops for good at the ledge, standing on walkable ground (no gravity, no fall) while every
+    /// step is refused. A jump frees it: the body leaves the contact plane, so the first quantum's leap keeps
+    /// only its part along the carried sliding normal's plane (straight up), that accepted transition drops the
+    /// sliding normal, and the airborne body carries on forward and lands on the platform.
+    /// </summary>
+    [Fact]
+    public void BodyDrivenWalker_StopsAtTheLedgeToo_AndAJumpFreesIt()
+    {
+        var engine = new PhysicsEngine(LedgeAboveRamp());
+        var mover = MoverDescription.Player();
+        var state = MoverState.OnFloor(TestGeometry.At(100, 101.75f, 0), 0f);
+        var body = BodyState.Creature();
+        var walk = new Vector3(0, 2f, 0);
+        BodyStepResult last = default;
+        for (int i = 0; i < 150; i++)
+        {
+            last = engine.Step(mover, state, body, Dt, walk);
+            state = last.Next;
+            body = last.Body;
+        }
+
+        Assert.False(last.Move.Succeeded);
+        Assert.InRange(FaceY - state.Position.Origin.Y, HalfRadius, Radius);
+        Assert.InRange(state.Position.Origin.Z, Top + 0.005f - 1e-4f, Top + 0.005f + 1e-4f);
+        Assert.True(state.Contact && state.OnWalkable && state.SlidingNormalValid);
+
+        var stuck = state.Position.Origin;
+        var jump = engine.Step(mover, state, body, Dt, walk, jumpVelocity: 4f);
+        Assert.True(jump.Jumped && jump.Move.Succeeded);
+        Assert.Equal(stuck.Y, jump.Next.Position.Origin.Y);
+        Assert.True(jump.Next.Position.Origin.Z > stuck.Z);
+        Assert.False(jump.Next.SlidingNormalValid);
+        state = jump.Next;
+        body = jump.Body;
+        for (int i = 0; i < 60; i++)
+        {
+            var r = engine.Step(mover, state, body, Dt, walk);
+            state = r.Next;
+            body = r.Body;
+        }
+        Assert.True(state.Position.Origin.Y > FaceY + 0.5f, $"y = {state.Position.Origin.Y}");
+        Assert.InRange(state.Position.Origin.Z, Top, Top + 0.01f);
     }
 
     // ---- (b) the top edge of a ramp over nothing -----------------------------------------------------------
