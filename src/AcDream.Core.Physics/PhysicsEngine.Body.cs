@@ -37,7 +37,9 @@ public sealed partial class PhysicsEngine
         float jumpVelocity = 0f)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        ValidateState(mover, state);
+        var begin = state.Position;
+        Guard.Pose(ref begin.Frame, "state.position");
+        ValidateState(mover, state, begin, begin.CellId);
         BodyGuard.Check(body, elapsed, desiredVelocity, jumpVelocity);
 
         var s = state;

@@ -61,12 +61,10 @@ public sealed partial class PhysicsEngine
     private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        var cell = ValidateState(mover, state);
-        Guard.Frame(target.Frame, "target");
         var begin = state.Position;
-        begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
-        target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
-        _transition.World.Cells.GetRequired(target.CellId, "target.cell");
+        Guard.Pose(ref begin.Frame, "state.position");
+        Guard.Pose(ref target.Frame, "target");
+        var cell = ValidateState(mover, state, begin, target.CellId);
 
         var t = _transition;
         Prepare(t, mover, state);
@@ -77,19 +75,25 @@ public sealed partial class PhysicsEngine
         return Collect(t, ok, state);
     }
 
-    /// <summary>Checks a mover's state (position, cell, contact plane, sliding normal); returns its cell.</summary>
-    private World.Cell ValidateState(MoverDescription mover, in MoverState state)
+    /// <summary>
+    /// Checks a mover's state (its pose already checked into <paramref name="begin"/>: cell, distance from
+    /// it, contact plane, sliding normal) and that <paramref name="targetCellId"/> is loaded; returns the
+    /// state's cell. The cell ids are usually one and the same: each distinct id is looked up once.
+    /// </summary>
+    private World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
     {
-        Guard.Frame(state.Position.Frame, "state.position");
         var cells = _transition.World.Cells;
-        var cell = cells.GetRequired(state.Position.CellId, "state.position.cell");
-        Guard.NearCell(cell.DistanceOutside(state.Position.Frame.Origin), mover.Reach, state.Position.CellId, state.Position.Frame.Origin, "state.position.origin");
+        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
+        if (targetCellId != begin.CellId)
+            cells.GetRequired(targetCellId, "target.cell");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
             Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
             Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
-            if (state.ContactPlaneCellId != 0)
-                cells.GetRequired(state.ContactPlaneCellId, "state.contactPlaneCellId");
+            uint planeCell = state.ContactPlaneCellId;
+            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId)
+                cells.GetRequired(planeCell, "state.contactPlaneCellId");
         }
         if (state.SlidingNormalValid)
             Guard.Finite(state.SlidingNormal, "state.slidingNormal");
@@ -104,8 +108,7 @@ public sealed partial class PhysicsEngine
     public MoveResult Place(MoverDescription mover, Position position)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        Guard.Frame(position.Frame, "position");
-        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
+        Guard.Pose(ref position.Frame, "position");
         var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
         Guard.NearCell(cell.DistanceOutside(position.Frame.Origin), mover.Reach, position.CellId, position.Frame.Origin, "position.origin");
         var t = _transition;

@@ -38,7 +38,7 @@ public struct Position
     /// <exception cref="ArgumentException">The landblock is not in the world, the point is not finite, or it falls outside the world.</exception>
     public static Position Outdoor(uint landblock, Vector3 local)
     {
-        if (landblock > 0xFFFF || (landblock >> 8) >= LandDefs.BlocksPerSide || (landblock & 0xFF) >= LandDefs.BlocksPerSide)
+        if (!LandDefs.IsValidLandblock(landblock))
             throw new ArgumentException($"landblock: must be 0xXXYY with X and Y in 0x00..0xFE, got 0x{landblock:X}.", nameof(landblock));
         Guard.Finite(local, "local");
         uint cell = (landblock << 16) | 1;

@@ -136,20 +136,23 @@ public sealed class WorldQuery
     /// <see cref="ViewerRadius"/>, <see cref="ViewerFlags"/>, sub-steps of one radius with a shorter last
     /// one — from <paramref name="pivot"/> towards <paramref name="desired"/> (same frame), stopping just
     /// short of the first thing in the way (terrain by the viewer's arm of validate_walkable, walls, objects;
-    /// creatures are ignored). An indoor pivot starts in the cell that holds it. When the sweep fails the
-    /// camera goes to the desired point if a cell holds it, else to the pivot, as retail does.
+    /// creatures are ignored). The sweep starts in the cell that holds the pivot. When the sweep fails the
+    /// camera goes to the desired point if a cell holds it, else to the pivot, as retail does (also when
+    /// no loaded cell holds the pivot).
     /// </summary>
     /// <param name="pivot">Where the arm starts (the player's head, say).</param>
     /// <param name="desired">Where the camera wants to be.</param>
-    /// <param name="playerId">The player's object id: the camera passes through the player.</param>
+    /// <param name="playerId">The player's object id: the camera passes through the player (a new id builds the viewer's description once; the same id allocates nothing).</param>
     public CameraArmResult CameraArm(in Position pivot, Vector3 desired, uint playerId = 0)
     {
         CheckPosition(pivot, "pivot.origin", "pivot.cell");
         Guard.Rotation(pivot.Frame.Orientation, "pivot.orientation");
         Guard.Finite(desired, "desired");
-        var start = pivot;
-        if (!LandDefs.IsLandCell(pivot.CellId) && FindCell(pivot, out var holder))
-            start = holder;
+        // Retail starts an indoor pivot in the cell that holds it (CPhysicsObj::AdjustPosition) and an outdoor
+        // one in the player's cell; here the pivot's cell id only names its frame, so both start in the cell
+        // holding the pivot (outdoors the same cell unless the pivot lies across a cell border).
+        if (!FindCell(pivot, out var start))
+            return new CameraArmResult(pivot, CameraPlacement.AtPivot, false, Vector3.Zero);
         var target = new Position(start.CellId, new Frame(desired - LandDefs.BlockOffset(pivot.CellId, start.CellId), start.Frame.Orientation));
         if (_viewerMover is null || _viewerMover.ObjectId != playerId)
             _viewerMover = new MoverDescription(playerId, [new Sphere(Vector3.Zero, ViewerRadius)], 0f, 0f, PhysicsState.None, ViewerFlags);

@@ -44,6 +44,8 @@ public sealed class SceneMover
     internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion)
         : this(name, description, start, motion, [], default) { }
 
+    private readonly int[] _frameItemStarts = [0];
+
     internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody)
     {
         Name = name;
@@ -52,6 +54,29 @@ public sealed class SceneMover
         _motion = motion;
         _steps = steps;
         StartBody = startBody;
+    }
+
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody,
+        string path, int[] frameItemStarts)
+        : this(name, description, start, motion, steps, startBody)
+    {
+        Path = path;
+        _frameItemStarts = frameItemStarts;
+    }
+
+    /// <summary>The mover's JSON path in its scene file (e.g. <c>movers[3]</c>), for error messages.</summary>
+    internal string Path { get; } = "movers[0]";
+
+    /// <summary>
+    /// The JSON path of the "motion" (or, for a body, "steps") item that produced frame
+    /// <paramref name="frame"/>, repeats counted.
+    /// </summary>
+    internal string FramePath(int frame)
+    {
+        int item = Array.BinarySearch(_frameItemStarts, frame);
+        if (item < 0)
+            item = ~item - 1;
+        return $"{Path}.{(IsBody ? "steps" : "motion")}[{item}]";
     }
 
     /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step"/>.</summary>

@@ -97,11 +97,15 @@ public static class SceneLoader
                 ReadObject(value, path);
             var movers = new List<SceneMover>();
             var names = new HashSet<string>(StringComparer.Ordinal);
+            long totalFrames = 0;
             foreach (var (value, path) in o.Array("movers"))
             {
                 var mover = ReadMover(value, path);
                 if (!names.Add(mover.Name))
                     throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
+                totalFrames += mover.FrameCount;
+                if (totalFrames > InputLimits.MaxSceneFrames)
+                    throw new SceneFormatException(path + (mover.IsBody ? ".steps" : ".motion"), $"the scene's movers walk more than {InputLimits.MaxSceneFrames} frames in all (InputLimits.MaxSceneFrames, movers × frames).");
                 movers.Add(mover);
             }
             if (movers.Count == 0)
@@ -467,12 +471,7 @@ public static class SceneLoader
                 throw new SceneFormatException(o.Child("objectInfo"), "Contact and OnWalkable are per-frame state; use \"floorZ\" or \"airborne\".");
             float scale = o.Float("scale", 1f);
             Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
-            var position = ReadPlacement(o);
-            if (o.Has("floorZ") == o.Bool("airborne", false))
-                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height) or \"airborne\": true.");
-            var start = o.Opt("floorZ") is { } fz
-                ? MoverState.OnFloor(position, JsonRead.Float(fz, o.Child("floorZ")))
-                : MoverState.Airborne(position);
+            var start = ReadStart(o, path);
             if (o.Has("motion") == o.Has("steps"))
                 throw new SceneFormatException(path, "a mover needs exactly one of \"motion\" (per-frame offsets) or \"steps\" (a body moved by time, velocity and jumps).");
             if (o.Has("body") && !o.Has("steps"))
@@ -480,19 +479,43 @@ public static class SceneLoader
             Vector3[] motion = [];
             SceneStep[] steps = [];
             var body = BodyState.Creature();
+            var itemStarts = new List<int>();
             if (o.Opt("steps") is { } st2)
             {
-                steps = ReadSteps(st2, o.Child("steps"));
+                steps = ReadSteps(st2, o.Child("steps"), itemStarts);
                 if (o.Opt("body") is { } b)
                     body = ReadBody(b, o.Child("body"));
             }
             else
             {
-                motion = ReadMotion(o.Req("motion"), o.Child("motion"));
+                motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
             }
             o.End();
             var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
-            return new SceneMover(name, description, start, motion, steps, body);
+            return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts]);
+        }
+
+        /// <summary>
+        /// The mover's state before its first frame: exactly one of "floorZ" (standing on a horizontal floor),
+        /// "airborne": true (no contact), or "start" (a full recorded state: placement, contact and walkable
+        /// flags, a contact plane of any slope with its cell, a carried sliding normal; StartStateReader).
+        /// </summary>
+        private MoverState ReadStart(JsonObj o, string path)
+        {
+            bool floor = o.Has("floorZ"), airborne = o.Bool("airborne", false), full = o.Has("start");
+            if ((floor ? 1 : 0) + (airborne ? 1 : 0) + (full ? 1 : 0) != 1)
+                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height), \"airborne\": true, or \"start\" (a full start state).");
+            if (full)
+            {
+                foreach (string placement in new[] { "position", "cell", "rotation" })
+                    if (o.Has(placement))
+                        throw new SceneFormatException(o.Child(placement), "a mover with \"start\" gives its placement inside \"start\".");
+                return StartStateReader.Read(o.Req("start"), o.Child("start"), _world);
+            }
+            var position = ReadPlacement(o);
+            return floor
+                ? MoverState.OnFloor(position, JsonRead.Float(o.Req("floorZ"), o.Child("floorZ")))
+                : MoverState.Airborne(position);
         }
 
         /// <summary>A body's start: velocity, omega, friction, elasticity (retail defaults) and whether it has a motion interpreter (default true).</summary>
@@ -530,11 +553,12 @@ public static class SceneLoader
         /// A body mover's frames: each <c>{ "dt": seconds | "hz": frames per second, "velocity": [..], "jump": m/s, "count": n }</c>
         /// (velocity and jump default to zero, count to 1).
         /// </summary>
-        private static SceneStep[] ReadSteps(JsonElement e, string path)
+        private static SceneStep[] ReadSteps(JsonElement e, string path, List<int> itemStarts)
         {
             var frames = new List<SceneStep>();
             foreach (var (value, p) in JsonRead.Array(e, path))
             {
+                itemStarts.Add(frames.Count);
                 var o = new JsonObj(value, p);
                 if (o.Has("dt") == o.Has("hz"))
                     throw new SceneFormatException(p, "a step needs exactly one of \"dt\" (seconds) or \"hz\" (frames per second).");
@@ -570,11 +594,12 @@ public static class SceneLoader
             return [.. frames];
         }
 
-        private static Vector3[] ReadMotion(JsonElement e, string path)
+        private static Vector3[] ReadMotion(JsonElement e, string path, List<int> itemStarts)
         {
             var frames = new List<Vector3>();
             foreach (var (value, p) in JsonRead.Array(e, path))
             {
+                itemStarts.Add(frames.Count);
                 if (value.ValueKind == JsonValueKind.Array)
                 {
                     frames.Add(JsonRead.Vec3(value, p));

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Reflection;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Diagnostics;
 
 namespace AcDream.Core.Physics.Scenes;
@@ -46,7 +47,15 @@ public static class SceneRunner
                 if (mover.IsBody)
                 {
                     var step = mover.Steps[f];
-                    var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                    BodyStepResult stepped;
+                    try
+                    {
+                        stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                    }
+                    catch (ArgumentException ex)
+                    {
+                        throw Refused(mover, f, ex);
+                    }
                     frames.Add(TrajectoryFrame.From(step, stepped));
                     state = stepped.Next;
                     body = stepped.Body;
@@ -55,7 +64,15 @@ public static class SceneRunner
                 {
                     var target = state.Position;
                     target.Frame.Origin += mover.Motion[f];
-                    var result = engine.Resolve(mover.Description, state, target);
+                    MoveResult result;
+                    try
+                    {
+                        result = engine.Resolve(mover.Description, state, target);
+                    }
+                    catch (ArgumentException ex)
+                    {
+                        throw Refused(mover, f, ex);
+                    }
                     frames.Add(TrajectoryFrame.From(target, result));
                     state = result.Next;
                 }
@@ -68,5 +85,18 @@ public static class SceneRunner
             movers.Add(new MoverTrajectory(mover.Name, frames));
         }
         return new Trajectory(scene.Name, scene.Sha256, LibraryVersion, movers);
+    }
+
+    /// <summary>
+    /// Input the engine refused while a scene ran, as a <see cref="SceneFormatException"/> naming the JSON
+    /// path it came from: the mover (its start state, on the first frame) or the motion or step item of that
+    /// frame, and the mover and frame.
+    /// </summary>
+    private static SceneFormatException Refused(SceneMover mover, int frame, ArgumentException ex)
+    {
+        bool startState = frame == 0 && (ex.Message.StartsWith("state.", StringComparison.Ordinal) || ex.Message.StartsWith("body.", StringComparison.Ordinal));
+        string path = startState ? mover.Path : mover.FramePath(frame);
+        var wrapped = SceneFormatException.Wrap(path, ex);
+        return new SceneFormatException(path, $"mover \"{mover.Name}\", frame {frame}: {wrapped.Detail}", ex);
     }
 }

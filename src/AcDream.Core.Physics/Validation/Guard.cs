@@ -181,6 +181,18 @@ internal static class Guard
         return length >= 1e-6f && float.IsFinite(length);
     }
 
+    /// <summary>
+    /// Checks a placement and normalizes its rotation in place: the origin as <see cref="Finite(Vector3, string, string?)"/>
+    /// (field + ".origin"), then the rotation as <see cref="Rotation"/> (field + ".orientation"). One
+    /// normalization per rotation: the per-frame entry points call this instead of <see cref="Frame"/> and
+    /// <see cref="Rotation"/> in turn.
+    /// </summary>
+    public static void Pose(ref Frame frame, string field)
+    {
+        Finite(frame.Origin, field, ".origin");
+        frame.Orientation = Rotation(frame.Orientation, field, ".orientation");
+    }
+
     public static void Frame(in Frame frame, string field)
     {
         Finite(frame.Origin, field, ".origin");

@@ -61,9 +61,18 @@ public static class InputLimits
     public const float MaxDistanceFromCell = 24f;
 
     /// <summary>
-    /// The most polygons <c>BspCompiler.Compile</c> accepts in one call. Compiling costs about the square of
-    /// the polygon count (the splitter choice scores every candidate plane against every polygon); 4096
-    /// polygons compile in a few seconds. Retail physics meshes have at most a few hundred.
+    /// The most polygons <c>BspCompiler.Compile</c> accepts in one call: 2048. Compiling grows faster than
+    /// the square of the polygon count for overlapping geometry (the splitter choice scores every candidate
+    /// plane against every polygon of a node, and each leaf's solidity is a winding number over all input
+    /// polygons); 1 600 scattered triangles take about 2 s on a 2-core machine (docs/performance.md,
+    /// <c>bench … compile</c>). Retail physics meshes have at most a few hundred polygons.
     /// </summary>
-    public const int MaxCompilePolygons = 4096;
+    public const int MaxCompilePolygons = 2048;
+
+    /// <summary>
+    /// The most frames a scene file's movers may walk in all (movers × frames, repeats expanded): 200 000,
+    /// about 10 s of running and 100 MB of trajectory. The real-cell scenes have at most about 3 000 frames;
+    /// one mover may walk at most <c>SceneLoader.MaxFramesPerMover</c>.
+    /// </summary>
+    public const int MaxSceneFrames = 200_000;
 }

@@ -111,14 +111,15 @@ public class RecordedDeterminismTests
             MoveResult r;
             if (mover.IsBody)
             {
-                // A body mover: the frame is one body step; its velocity joins the hash.
+                // A body mover (PhysicsEngine.Step): its velocity and quanta count too.
                 var step = mover.Steps[f];
-                var b = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
-                r = b.Move;
-                body = b.Body;
+                var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                body = stepped.Body;
                 Add(BitConverter.SingleToUInt32Bits(body.Velocity.X));
                 Add(BitConverter.SingleToUInt32Bits(body.Velocity.Y));
                 Add(BitConverter.SingleToUInt32Bits(body.Velocity.Z));
+                Add((uint)stepped.Quanta);
+                r = stepped.Move;
             }
             else
             {
