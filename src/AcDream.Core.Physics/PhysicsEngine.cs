@@ -69,7 +69,7 @@ public sealed partial class PhysicsEngine
         var t = _transition;
         Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
-        t.SpherePath.InitPath(cell, begin, target);
+        t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition();
         return Collect(t, ok, state);

@@ -131,21 +131,30 @@ internal sealed class SpherePath
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
     public void InitPath(Cell? beginCell, Position? beginPos, Position endPos)
     {
-        BeginCell = beginCell;
-        EndPos = endPos;
-        HasBeginPos = beginPos.HasValue;
         if (beginPos is { } begin)
         {
-            BeginPos = begin;
-            InsertType = InsertType.Transition;
-            CurPos = begin;
+            InitPath(beginCell, begin, endPos);
+            return;
         }
-        else
-        {
-            BeginPos = default;
-            InsertType = InsertType.Placement;
-            CurPos = endPos;
-        }
+        BeginCell = beginCell;
+        EndPos = endPos;
+        HasBeginPos = false;
+        BeginPos = default;
+        InsertType = InsertType.Placement;
+        CurPos = endPos;
+        CurCell = beginCell;
+        CacheGlobalCurrCenter();
+    }
+
+    /// <summary>Starts a move from <paramref name="beginPos"/> (the per-frame path: no nullable copies).</summary>
+    public void InitPath(Cell? beginCell, in Position beginPos, in Position endPos)
+    {
+        BeginCell = beginCell;
+        EndPos = endPos;
+        HasBeginPos = true;
+        BeginPos = beginPos;
+        InsertType = InsertType.Transition;
+        CurPos = beginPos;
         CurCell = beginCell;
         CacheGlobalCurrCenter();
     }
