@@ -6,7 +6,8 @@ namespace AcDream.Core.Physics.Bench;
 
 /// <summary>
 /// Entry point: <c>door</c> runs the door job, <c>body</c> the body-step job, <c>queries</c> times the world
-/// queries, <c>compile</c> the BSP compiler's cost job, <c>realcells</c> the real-cells job, <c>trace</c>
+/// queries, <c>compile</c> the BSP compiler's cost job, <c>registry</c> the registry's removal and move
+/// costs, <c>realcells</c> the real-cells job, <c>trace</c>
 /// prints one door approach; anything else goes to BenchmarkDotNet's switcher.
 /// </summary>
 public static class Program
@@ -21,6 +22,7 @@ public static class Program
             case "body": return BodyJob.Run(rest);
             case "queries": return Queries.QueryJob.Run(rest);
             case "compile": return Compile.CompileJob.Run(rest);
+            case "registry": return Registry.RegistryJob.Run();
             case "realcells": return RealCells.RealCellsJob.Run(rest);
             case "trace": return DoorTrace.Run(rest);
             default:

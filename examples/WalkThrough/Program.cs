@@ -2,13 +2,14 @@
 // an indoor cell. The player bumps into the door, goes round it, passes the trees, and walks through the
 // cottage's doorway into its room, printing where it is. The README's "Using the library" section is
 // made of the regions marked "readme" below (a test checks that they are the same text).
-// Exit code: 0 when the walk ends inside the cottage, 1 otherwise.
+// Exit code: 0 when the walk ends inside the cottage, the replay matches and the runner lands, 1 otherwise.
 
 #region readme
 using System;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
@@ -98,8 +99,25 @@ var replay = TrajectoryReplay.Replay(scene, Trajectory.LoadFile(path));
 Console.WriteLine(replay.Matches ? "door scene: replay matches" : replay.FirstDifference!.ToString());
 #endregion
 
+#region readme
+// A body moves by elapsed time instead of by target (retail CPhysicsObj::update_object): velocity, gravity,
+// friction, jumps, falls and landings. Here the player runs north at 4 m/s for two seconds and jumps once.
+var body = BodyState.Creature();                                      // retail friction 0.95, elasticity 0.05
+var runner = engine.Place(player, Position.Outdoor(landblock, new Vector3(96f, 84f, 0f))).Next;
+for (int i = 0; i < 60; i++)
+{
+    var step = engine.Step(player, runner, body, 1.0 / 30,            // elapsed seconds, at any frame rate
+        desiredVelocity: new Vector3(0f, 4f, 0f),                     // the run the input asks for, m/s
+        jumpVelocity: i == 10 ? 4f : 0f);                             // a jump's vertical speed, or 0
+    runner = step.Next;                                               // position, contact, walkable ground
+    body = step.Body;                                                 // velocity, time carried to the next call
+}
+Console.WriteLine($"after the run and the jump: {runner.Position}, standing: {runner.Contact && runner.OnWalkable}");
+#endregion
+
 File.Delete(path);
-return inside && replay.Matches ? 0 : 1;
+bool landed = runner.Contact && runner.OnWalkable && runner.Position.Origin.Y > 90f;
+return inside && replay.Matches && landed ? 0 : 1;
 
 static Polygon Quad(Vector3 a, Vector3 b, Vector3 c, Vector3 d) => new([a, b, c, d]);
 

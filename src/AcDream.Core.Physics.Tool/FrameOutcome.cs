@@ -30,7 +30,8 @@ internal static class FrameOutcomes
 
     /// <summary>
     /// The outcome of <paramref name="frame"/>, which started at <paramref name="previous"/> (the same
-    /// landblock frame): refused, else airborne, else stepped, else slid, else free.
+    /// landblock frame): refused, else airborne, else stepped, else slid (ended away from its target, or for a
+    /// body mover, which has no target, a collision normal was recorded), else free.
     /// </summary>
     public static FrameOutcome Of(TrajectoryFrame frame, Vector3 previous)
     {
@@ -40,6 +41,9 @@ internal static class FrameOutcomes
             return FrameOutcome.Airborne;
         if (MathF.Abs(frame.Position.Z - previous.Z) > StepHeight)
             return FrameOutcome.Stepped;
+        // A body mover's frame has no target (it moves by velocity): it slid when a collision deflected it.
+        if (frame.Target.CellId == 0)
+            return frame.CollisionNormalValid ? FrameOutcome.Slid : FrameOutcome.Free;
         var target = frame.Target.Origin + LandDefs.BlockOffset(frame.Cell, frame.Target.CellId);
         var missed = target - frame.Position;
         missed.Z = 0f;

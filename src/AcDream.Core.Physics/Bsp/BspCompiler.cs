@@ -1,6 +1,8 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.ExceptionServices;
+using System.Threading;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
@@ -108,15 +110,35 @@ public static class BspCompiler
 
         float margin = MathF.Max(1f, 0.1f * Vector3.Distance(min, max));
         var cell = BoxCell(min - new Vector3(margin), max + new Vector3(margin));
-        var root = Build(set, [.. new bool[set.Count]], new List<(Plane, bool)>(), cell, set, name);
-        ComputeBounds(root, null);
 
+        // The recursion below takes about a kilobyte of stack per tree level, more than a 256 KB worker
+        // thread has at InputLimits.MaxBspDepth levels, so it runs on a thread of its own with a stack
+        // sized for the limit. Compiling is load-time work; the result does not depend on the thread.
         var nodes = new List<BspNodeData>();
         var outPolygons = new List<Polygon>();
-        var polygonIndex = new Dictionary<Polygon, int>(ReferenceEqualityComparer.Instance);
-        Flatten(root, nodes, outPolygons, polygonIndex);
+        Exception? failure = null;
+        var worker = new Thread(() =>
+        {
+            try
+            {
+                var root = Build(set, [.. new bool[set.Count]], new List<(Plane, bool)>(), cell, set, name);
+                ComputeBounds(root, null);
+                Flatten(root, nodes, outPolygons, new Dictionary<Polygon, int>(ReferenceEqualityComparer.Instance));
+            }
+            catch (Exception e)
+            {
+                failure = e;
+            }
+        }, CompileStackBytes);
+        worker.Start();
+        worker.Join();
+        if (failure is not null)
+            ExceptionDispatchInfo.Capture(failure).Throw();
         return BspTree.Create(outPolygons, nodes, name);
     }
+
+    /// <summary>The stack of the compiler's own thread: 16 MB, about sixty times what <see cref="InputLimits.MaxBspDepth"/> levels need.</summary>
+    private const int CompileStackBytes = 16 * 1024 * 1024;
 
     /// <summary>
     /// One node of the recursive split. <paramref name="onPath"/> says, for each polygon of the set, whether

@@ -50,8 +50,9 @@ public sealed class ParityReport
         double percent = Frames == 0 ? 0 : 100.0 * WithinTolerance / Frames;
         string need = RequireBitIdentical ? "bit-identical" : $"within {ParityCheck.Tolerance.ToString("0e0", c)} m";
         string line = string.Format(c,
-            "{0}: {1} ({2}) {3} runs, {4} frames, {5:0.00} % within {6} m, {7} bit-identical, max difference {8:0.###e0} m, {9} flag mismatches",
-            File, Passed ? "ok" : "FAIL", need, Runs, Frames, percent, ParityCheck.Tolerance.ToString("0e0", c), BitIdentical, MaxDifference, FlagMismatches);
+            "{0}: {1} ({2}) {3} runs, {4} frames, {5:0.00} % within {6} m, {7} bit-identical, max difference {8} m, {9} flag mismatches",
+            File, Passed ? "ok" : "FAIL", need, Runs, Frames, percent, ParityCheck.Tolerance.ToString("0e0", c), BitIdentical,
+            MaxDifference == 0 ? "0" : MaxDifference.ToString("0.###e0", c), FlagMismatches);
         return Passed ? line : $"{line}; first: {FirstFailure}";
     }
 }

@@ -142,7 +142,7 @@ public sealed class WorldQuery
     /// </summary>
     /// <param name="pivot">Where the arm starts (the player's head, say).</param>
     /// <param name="desired">Where the camera wants to be.</param>
-    /// <param name="playerId">The player's object id: the camera passes through the player.</param>
+    /// <param name="playerId">The player's object id: the camera passes through the player (a new id builds the viewer's description once; the same id allocates nothing).</param>
     public CameraArmResult CameraArm(in Position pivot, Vector3 desired, uint playerId = 0)
     {
         CheckPosition(pivot, "pivot.origin", "pivot.cell");

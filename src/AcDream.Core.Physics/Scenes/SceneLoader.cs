@@ -471,12 +471,7 @@ public static class SceneLoader
                 throw new SceneFormatException(o.Child("objectInfo"), "Contact and OnWalkable are per-frame state; use \"floorZ\" or \"airborne\".");
             float scale = o.Float("scale", 1f);
             Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
-            var position = ReadPlacement(o);
-            if (o.Has("floorZ") == o.Bool("airborne", false))
-                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height) or \"airborne\": true.");
-            var start = o.Opt("floorZ") is { } fz
-                ? MoverState.OnFloor(position, JsonRead.Float(fz, o.Child("floorZ")))
-                : MoverState.Airborne(position);
+            var start = ReadStart(o, path);
             if (o.Has("motion") == o.Has("steps"))
                 throw new SceneFormatException(path, "a mover needs exactly one of \"motion\" (per-frame offsets) or \"steps\" (a body moved by time, velocity and jumps).");
             if (o.Has("body") && !o.Has("steps"))
@@ -498,6 +493,29 @@ public static class SceneLoader
             o.End();
             var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
             return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts]);
+        }
+
+        /// <summary>
+        /// The mover's state before its first frame: exactly one of "floorZ" (standing on a horizontal floor),
+        /// "airborne": true (no contact), or "start" (a full recorded state: placement, contact and walkable
+        /// flags, a contact plane of any slope with its cell, a carried sliding normal; StartStateReader).
+        /// </summary>
+        private MoverState ReadStart(JsonObj o, string path)
+        {
+            bool floor = o.Has("floorZ"), airborne = o.Bool("airborne", false), full = o.Has("start");
+            if ((floor ? 1 : 0) + (airborne ? 1 : 0) + (full ? 1 : 0) != 1)
+                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height), \"airborne\": true, or \"start\" (a full start state).");
+            if (full)
+            {
+                foreach (string placement in new[] { "position", "cell", "rotation" })
+                    if (o.Has(placement))
+                        throw new SceneFormatException(o.Child(placement), "a mover with \"start\" gives its placement inside \"start\".");
+                return StartStateReader.Read(o.Req("start"), o.Child("start"), _world);
+            }
+            var position = ReadPlacement(o);
+            return floor
+                ? MoverState.OnFloor(position, JsonRead.Float(o.Req("floorZ"), o.Child("floorZ")))
+                : MoverState.Airborne(position);
         }
 
         /// <summary>A body's start: velocity, omega, friction, elasticity (retail defaults) and whether it has a motion interpreter (default true).</summary>

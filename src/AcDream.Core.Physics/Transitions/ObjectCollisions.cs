@@ -60,15 +60,43 @@ internal static class ObjectCollisions
     /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
     /// non-OK result returns. An initial placement tests no object.
     /// </summary>
-    internal static TransitionState FindInCell(Transition transition, ShadowObjectRegistry.CellObjects objects)
+    internal static TransitionState FindInCell(Transition transition, uint cellId, ShadowObjectRegistry.CellObjects objects)
     {
-        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
+        if (transition.SpherePath.InsertType == InsertType.InitialPlacement || objects.Count == 0)
             return TransitionState.OK;
-        for (int i = 0; i < objects.Count; i++)
+        // Only the objects the check spheres can reach are tested, in the cell's order; for the others every
+        // retail test would return OK and change nothing (see ObjectCull).
+        var candidates = transition.Cull.Candidates(transition, cellId, objects);
+        if (transition.Observer is { } observer)
+            return FindInCellObserved(transition, objects, candidates, observer);
+        foreach (int i in candidates)
         {
             var state = FindObjectCollisionsUnlessSelf(transition, objects.RowsOf(i));
             if (state != TransitionState.OK)
                 return state;
+        }
+        return TransitionState.OK;
+    }
+
+    /// <summary>As <see cref="FindInCell"/>, reporting the objects out of reach as skipped (<see cref="SkipReason.OutOfReach"/>).</summary>
+    private static TransitionState FindInCellObserved(Transition transition, ShadowObjectRegistry.CellObjects objects, ReadOnlySpan<int> candidates, ITransitionObserver observer)
+    {
+        uint self = transition.ObjectInfo.ObjectId;
+        int next = 0;
+        for (int i = 0; i < objects.Count; i++)
+        {
+            var rows = objects.RowsOf(i);
+            if (next < candidates.Length && candidates[next] == i)
+            {
+                next++;
+                var state = FindObjectCollisionsUnlessSelf(transition, rows);
+                if (state != TransitionState.OK)
+                    return state;
+            }
+            else if (rows.Length > 0 && (rows[0].EntityId != self || self == 0))
+            {
+                NotifySkipped(observer, rows, SkipReason.OutOfReach);
+            }
         }
         return TransitionState.OK;
     }
@@ -157,8 +185,7 @@ internal static class ObjectCollisions
         switch (shape.Kind)
         {
             case ShadowShapeKind.Bsp:
-                var partPos = new Position(row.Position.CellId, row.Position.Frame.Combine(shape.PartFrame));
-                return PartCollision.Collide(transition, shape.Model!, partPos, shape.ModelScale);
+                return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
                 path.CacheLocalSpaceSphere(row.Position, 1.0f);

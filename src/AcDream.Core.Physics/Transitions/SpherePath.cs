@@ -125,6 +125,7 @@ internal sealed class SpherePath
         Walkable = null;
         PlacementAllowsSliding = true;
         _currCentersValid = false;
+        _curFresh.Valid = _checkFresh.Valid = false;
     }
 
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
@@ -157,6 +158,7 @@ internal sealed class SpherePath
             LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
         _currCentersValid = false;
+        _curFresh.Valid = _checkFresh.Valid = false;
     }
 
     /// <summary>Moves the check position and its spheres by an offset.</summary>
@@ -244,18 +246,57 @@ internal sealed class SpherePath
     {
         float invScale = 1.0f / scale;
         var spaceMatrix = space.Frame.Matrix;
-        var curMatrix = CurPos.Frame.Matrix;
-        var checkMatrix = CheckPos.Frame.Matrix;
+        // Position::localtolocal is the other position's localtoglobal, then this one's globaltolocal. The
+        // first half is the same for every object tested from one path position: it is the fresh sphere
+        // centres, computed once per position (same expression, same bits) instead of once per object.
+        ref readonly var curCentres = ref CentresAt(CurPos, ref _curFresh);
+        ref readonly var checkCentres = ref CentresAt(CheckPos, ref _checkFresh);
+        var toSpaceFromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
+        var toSpaceFromCheck = LandDefs.BlockOffset(space.CellId, CheckPos.CellId);
         for (int i = 0; i < NumSphere; i++)
         {
-            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(spaceMatrix, CurPos, curMatrix, LocalSphere[i].Center) * invScale;
+            LocalSpaceCurrCenter[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCur + curCentres[i], space.Frame.Origin) * invScale;
             LocalSpaceCurrCenter[i].Radius = LocalSphere[i].Radius * invScale;
             LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
-            LocalSpaceSphere[i].Center = space.LocalToLocal(spaceMatrix, CheckPos, checkMatrix, LocalSphere[i].Center) * invScale;
+            LocalSpaceSphere[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCheck + checkCentres[i], space.Frame.Origin) * invScale;
         }
         LocalSpacePos = space;
         LocalSpaceZ = spaceMatrix.PositionToLocal(Vector3.UnitZ);
         LocalSpaceLowPoint = LocalSpaceSphere[0].Center - LocalSpaceZ * LocalSpaceSphere[0].Radius;
+    }
+
+    /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>
+    private struct FreshCentres
+    {
+        public bool Valid;
+        public Position For;
+        public CentrePair Centres;
+    }
+
+    [System.Runtime.CompilerServices.InlineArray(2)]
+    private struct CentrePair
+    {
+        private Vector3 _first;
+    }
+
+    private FreshCentres _curFresh, _checkFresh;
+
+    /// <summary>
+    /// The position's matrix · (local sphere centre) + origin, for each sphere,
+    /// exactly as <see cref="Position.LocalToLocal(in RotationMatrix, in Position, in RotationMatrix, Vector3)"/>
+    /// computes its first half; recomputed only when the position differs in any bit from the last one.
+    /// </summary>
+    private ref readonly CentrePair CentresAt(in Position position, ref FreshCentres fresh)
+    {
+        if (!fresh.Valid || !SameBits(position, fresh.For))
+        {
+            var matrix = position.Frame.Matrix;
+            for (int i = 0; i < NumSphere; i++)
+                fresh.Centres[i] = matrix.PositionToGlobal(LocalSphere[i].Center, position.Frame.Origin);
+            fresh.For = position;
+            fresh.Valid = true;
+        }
+        return ref fresh.Centres;
     }
 
     /// <summary>True when the remembered walkable polygon still holds the mover (or there is none).</summary>

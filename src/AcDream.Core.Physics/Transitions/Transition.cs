@@ -21,6 +21,8 @@ internal sealed partial class Transition
     public readonly SpherePath SpherePath = new();
     /// <summary>The contacts.</summary>
     public readonly CollisionInfo CollisionInfo = new();
+    /// <summary>Which objects of each cell the check spheres can reach (not retail; changes no result).</summary>
+    internal readonly ObjectCull Cull = new();
     /// <summary>The cells the check position touches.</summary>
     public readonly CellArray CellArray = new();
 

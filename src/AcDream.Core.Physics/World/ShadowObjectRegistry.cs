@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Numerics;
 using System.Runtime.InteropServices;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
@@ -28,14 +29,20 @@ public sealed class ShadowObjectRegistry
         public int CylCount;
         public int SphereCount;
         public Sphere LocalBounds;
+        /// <summary>The object's reach box in its own landblock's space (see <see cref="ReachBox"/>).</summary>
+        public Vector3 ReachMin, ReachMax;
         /// <summary>The cells the object is listed in.</summary>
         public readonly List<uint> Cells = new(4);
         /// <summary>For each entry of <see cref="Cells"/>, the object's index in that cell's list.</summary>
         public readonly List<int> Slots = new(4);
     }
 
-    /// <summary>One object in a cell's list, and which of the object's cells that list is (its index in <see cref="Record.Cells"/>).</summary>
-    internal readonly record struct Slot(Record Record, int CellIndex);
+    /// <summary>
+    /// One object in a cell's list, which of the object's cells that list is (its index in
+    /// <see cref="Record.Cells"/>), and the object's reach box in that cell's landblock space (see
+    /// <see cref="ReachBox"/>), kept beside the record so a cull reads the list alone.
+    /// </summary>
+    internal readonly record struct Slot(Record Record, int CellIndex, Vector3 ReachMin, Vector3 ReachMax);
 
     private readonly CellGraph _graph;
     private readonly Dictionary<uint, List<Slot>> _byCell = new();
@@ -45,6 +52,9 @@ public sealed class ShadowObjectRegistry
 
     /// <summary>Creates an empty registry over a world's cells.</summary>
     public ShadowObjectRegistry(CellGraph graph) => _graph = graph ?? throw new ArgumentNullException(nameof(graph));
+
+    /// <summary>Changes with every registration, move and removal (a transition's object cull starts over).</summary>
+    internal int Version { get; private set; }
 
     /// <summary>How many objects are registered.</summary>
     public int Count => _objects.Count;
@@ -184,6 +194,18 @@ public sealed class ShadowObjectRegistry
 
         /// <summary>The rows (one per shape) of the cell's <paramref name="index"/>-th object.</summary>
         public ReadOnlySpan<ShadowEntry> RowsOf(int index) => _slots![index].Record.Rows;
+
+        /// <summary>
+        /// True when the <paramref name="index"/>-th object's reach box (this cell's landblock space) meets
+        /// the box <paramref name="min"/>..<paramref name="max"/>.
+        /// </summary>
+        public bool Reaches(int index, Vector3 min, Vector3 max)
+        {
+            var slot = _slots![index];
+            return slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
+                && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
+                && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z;
+        }
     }
 
     /// <summary>The cells an object is listed in.</summary>
@@ -300,11 +322,47 @@ public sealed class ShadowObjectRegistry
     {
         for (int i = 0; i < record.Shapes.Length; i++)
             record.Rows[i] = new ShadowEntry(record.Id, record.Shapes[i], record.Position, record.Scale, record.State, record.Flags, record.CylCount, record.SphereCount);
+        ReachBox(record, out record.ReachMin, out record.ReachMax);
+    }
+
+    /// <summary>
+    /// The box (landblock space of the object's cell) outside which a mover sphere's centre, less its
+    /// radius, cannot touch any of the object's shapes in any of retail's shape tests: a BSP part's
+    /// bounding sphere, a sphere, or a cylinder's upright slab (its XY circle and Z span, the slab test of
+    /// CCylSphere::collides_with_sphere, whose corners a sphere around it would miss). Widened by a margin
+    /// far above float rounding (and the BSP test's EPSILON slack), so a cull by it never skips a shape
+    /// that the exact test would touch.
+    /// </summary>
+    private static void ReachBox(Record record, out Vector3 min, out Vector3 max)
+    {
+        min = new Vector3(float.MaxValue);
+        max = new Vector3(float.MinValue);
+        foreach (var shape in record.Shapes)
+        {
+            if (shape.Kind == ShadowShapeKind.Cylinder)
+            {
+                var cyl = shape.Cylinder;
+                var low = record.Position.LocalToGlobal(cyl.LowPoint);
+                min = Vector3.Min(min, low - new Vector3(cyl.Radius, cyl.Radius, 0));
+                max = Vector3.Max(max, low + new Vector3(cyl.Radius, cyl.Radius, cyl.Height));
+            }
+            else
+            {
+                var centre = record.Position.LocalToGlobal(shape.Bounds.Center);
+                var r = new Vector3(shape.Bounds.Radius);
+                min = Vector3.Min(min, centre - r);
+                max = Vector3.Max(max, centre + r);
+            }
+        }
+        var margin = new Vector3(0.05f * MathF.Max(1f, record.Scale) + 0.01f);
+        min -= margin;
+        max += margin;
     }
 
     /// <summary>Appends the object to the lists of <paramref name="cells"/> and records them as its cells.</summary>
     private void AddToCells(Record record, List<uint> cells)
     {
+        Version++;
         record.Cells.Clear();
         record.Slots.Clear();
         for (int k = 0; k < cells.Count; k++)
@@ -314,7 +372,8 @@ public sealed class ShadowObjectRegistry
                 _byCell.Add(cellId, slots = new List<Slot>());
             record.Cells.Add(cellId);
             record.Slots.Add(slots.Count);
-            slots.Add(new Slot(record, k));
+            var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
+            slots.Add(new Slot(record, k, record.ReachMin + offset, record.ReachMax + offset));
         }
     }
 
@@ -326,6 +385,7 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     private void RemoveFromCells(Record record)
     {
+        Version++;
         for (int k = 0; k < record.Cells.Count; k++)
         {
             var slots = _byCell[record.Cells[k]];

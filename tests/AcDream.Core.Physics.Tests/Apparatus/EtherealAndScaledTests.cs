@@ -34,6 +34,11 @@ public class EtherealAndScaledTests
         ghost.Walk(new Vector3(0, 0.1f, 0), 40);
         Assert.InRange(ghost.Origin.Y, 101.5f - 0.1f, 101.5f + PhysicsConstants.Epsilon);
         Assert.All(ghost.Frames, f => Assert.DoesNotContain(WallId, f.Collided)); // static objects count as environment
+        // It is stopped by a real collision with the wall's face (normal −Y), not by the ethereal overlap
+        // test, which records no normal (validate_transition would then report +Z).
+        var hits = ghost.Frames.Where(f => f.Result.CollisionNormalValid).ToList();
+        Assert.NotEmpty(hits);
+        Assert.All(hits, f => Assert.Equal(-1f, f.Result.CollisionNormal.Y, 4));
     }
 
     [Fact]

@@ -107,4 +107,28 @@ public class StepAndEdgeTests
         Assert.All(player.Frames, f => Assert.InRange(f.After.Z, 1f, 1.01f));
         Assert.True(player.State.Contact);
     }
+
+    /// <summary>
+    /// A two-sphere mover whose step-down (1.5 m) exceeds its diameter (0.96 m) probes twice, 0.75 m each,
+    /// the second from where the first left it (retail: the check position is not restored between them),
+    /// so it reaches 1.5 m. The player without edge slide crosses the platform's far edge (y = 106) in a
+    /// 0.5 m frame (two 0.25 m sub-steps); at y = 106.5 its sphere (r = 0.48) is clear of the top face, so
+    /// the first probe touches nothing. Off a 1.4 m platform the second probe reaches the ground: origin
+    /// z = 0.005 (the player's sphere 0 rests 0.005 below its origin), in contact. Off a 1.6 m one both fall
+    /// 0.1 m short: it walks on out of contact at z = 1.605.
+    /// </summary>
+    [Theory]
+    [InlineData(1.4f, true)]
+    [InlineData(1.6f, false)]
+    public void WalkingOffALedge_TheStepDownReachesTwoHalfProbes(float height, bool steppedDown)
+    {
+        var noEdgeSlide = new MoverDescription(0x50000003, MoverDescription.Player().Spheres, 0.6f, 1.5f, PhysicsState.Gravity, ObjectInfoState.IsPlayer);
+        var player = new Mover(Platform(height), noEdgeSlide, MoverState.OnFloor(TestGeometry.At(100, 105.5f, height), height));
+        player.Walk(new Vector3(0, 0.5f, 0), 2);
+        Assert.InRange(player.Frames[0].After.Z, height + 0.005f - 0.002f, height + 0.005f + 0.002f); // still on the platform at y = 106
+        Assert.InRange(player.Origin.Y, 106.5f - 0.001f, 106.5f + 0.001f);
+        float expectedZ = steppedDown ? 0.005f : height + 0.005f;
+        Assert.InRange(player.Origin.Z, expectedZ - 0.002f, expectedZ + 0.002f);
+        Assert.Equal(steppedDown, player.State.Contact);
+    }
 }

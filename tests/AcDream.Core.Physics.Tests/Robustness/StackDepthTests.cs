@@ -169,6 +169,19 @@ public class StackDepthTests
     }
 
     [Fact]
+    public void Compile_OfAConvexSolidJustWithinTheDepthLimit_RunsOnA256KBThread()
+    {
+        // 250 sides, a top and a bottom: 252 distinct planes, one level each, then the solid leaf.
+        var prism = AcDream.Core.Physics.Bench.Compile.CompileMeshes.Prism(InputLimits.MaxBspDepth - 6);
+        BspTree? tree = null;
+        OnSmallStack(() => tree = BspCompiler.Compile(prism, "prism"));
+        int depth = 0;
+        for (int i = 0; i >= 0; i = tree!.Nodes[i].IsLeaf ? -1 : tree.Nodes[i].Back)
+            depth++;
+        Assert.Equal(InputLimits.MaxBspDepth - 3, depth);
+    }
+
+    [Fact]
     public void SceneFile_WithATreeDeeperThanTheLimit_IsRefusedNamingTheModel()
     {
         var json = new StringBuilder();
