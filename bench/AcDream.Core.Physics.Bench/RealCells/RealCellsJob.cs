@@ -5,9 +5,12 @@ using System.IO;
 using System.Linq;
 using System.Numerics;
 using System.Text;
+using System.IO.Compression;
+using System.Text.Json;
 using System.Text.Json.Nodes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bench.Benchmarks;
+using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Bench.RealCells;
@@ -33,7 +36,7 @@ public static class RealCellsJob
             else if (args[i] == "--out" && i + 1 < args.Length) outDir = args[++i];
             else { Console.Error.WriteLine($"realcells: unknown argument '{args[i]}' (usage: realcells [--dir DIR] [--out DIR])"); return 2; }
         }
-        dir ??= RealCellsFile.FindSharedFolder();
+        dir ??= FindSharedFolder();
         if (dir is null || !Directory.Exists(dir))
         {
             Console.WriteLine("realcells: no shared/real-cells folder found beside the repository; skipped.");
@@ -50,13 +53,13 @@ public static class RealCellsJob
         var files = new List<FileRun>();
         foreach (string path in Directory.GetFiles(dir, "*.json.gz").OrderBy(p => p, StringComparer.Ordinal))
         {
-            var file = RealCellsFile.Load(path);
-            string text = File.ReadAllText(file.ScenePath);
-            var shipped = SceneLoader.Load(text, file.Name);
-            var compiled = SceneLoader.Load(WithCompiledTrees(text), file.Name);
-            var run = Compare(file, shipped, compiled);
+            var set = ParityReader.ReadFile(path);
+            string name = Path.GetFileName(path).Replace(".json.gz", "", StringComparison.Ordinal);
+            string text = File.ReadAllText(Path.Combine(dir, "scenes", SceneFileOf(path)));
+            var compiled = SceneLoader.Load(WithCompiledTrees(text), name);
+            var run = Compare(name, set, compiled);
             files.Add(run);
-            Console.WriteLine($"{file.Name}: compared ({run.Row.Frames} frames)");
+            Console.WriteLine($"{name}: compared ({run.Row.Frames} frames)");
         }
 
         // Timing in rounds, every workload once per round, keeping each one's fastest: the machine is shared,
@@ -79,6 +82,29 @@ public static class RealCellsJob
         Console.WriteLine();
         Console.WriteLine(report);
         return 0;
+    }
+
+    /// <summary>
+    /// The real-cells folder: <c>shared/real-cells</c> beside the repository (or beside any folder above the
+    /// current directory), or null when there is none.
+    /// </summary>
+    public static string? FindSharedFolder()
+    {
+        for (var dir = new DirectoryInfo(Directory.GetCurrentDirectory()); dir is not null; dir = dir.Parent)
+        {
+            string candidate = Path.Combine(dir.FullName, "shared", "real-cells");
+            if (Directory.Exists(candidate))
+                return candidate;
+        }
+        return null;
+    }
+
+    /// <summary>The scene file a reference file's header names.</summary>
+    private static string SceneFileOf(string path)
+    {
+        using var stream = new GZipStream(File.OpenRead(path), CompressionMode.Decompress);
+        using var doc = JsonDocument.Parse(stream);
+        return doc.RootElement.GetProperty("scene").GetString()!;
     }
 
     /// <summary>The scene text with every physics model's explicit tree dropped, so the loader compiles it (containment trees are kept).</summary>
@@ -123,25 +149,24 @@ public static class RealCellsJob
         }
     }
 
-    private static FileRun Compare(RealCellsFile file, Scene shipped, Scene compiled)
+    private static FileRun Compare(string name, ParitySet set, Scene compiled)
     {
-        var shippedEngine = new PhysicsEngine(shipped.World);
+        var shippedEngine = new PhysicsEngine(set.World);
         var compiledEngine = new PhysicsEngine(compiled.World);
         var inputs = new List<(MoverDescription Mover, MoverState State, Position Target)>();
         int frames = 0, shippedWithin = 0, compiledWithin = 0, same = 0;
         double maxDiff = 0;
-        foreach (var mover in file.Movers)
+        foreach (var run in set.Runs)
         {
-            var description = shipped.Movers.First(m => m.Name == mover.Name).Description;
-            var compiledDescription = compiled.Movers.First(m => m.Name == mover.Name).Description;
-            var a = mover.Start;
-            var b = mover.Start;
-            foreach (var frame in mover.Frames)
+            var compiledDescription = compiled.Movers.First(m => m.Name == run.Name).Description;
+            var a = run.Start;
+            var b = run.Start;
+            foreach (var frame in run.Frames)
             {
                 var ta = a.Position; ta.Frame.Origin += frame.Offset;
                 var tb = b.Position; tb.Frame.Origin += frame.Offset;
-                inputs.Add((description, a, ta));
-                var ra = shippedEngine.Resolve(description, a, ta);
+                inputs.Add((run.Mover, a, ta));
+                var ra = shippedEngine.Resolve(run.Mover, a, ta);
                 var rb = compiledEngine.Resolve(compiledDescription, b, tb);
                 a = ra.Next;
                 b = rb.Next;
@@ -152,7 +177,7 @@ public static class RealCellsJob
                 maxDiff = Math.Max(maxDiff, Vector3.Distance(a.Position.Frame.Origin, b.Position.Frame.Origin));
             }
         }
-        var row = new Row(file.Name, file.Movers.Count, frames, shippedWithin, compiledWithin, same, maxDiff);
+        var row = new Row(name, set.Runs.Count, frames, shippedWithin, compiledWithin, same, maxDiff);
         return new FileRun(row, shippedEngine, compiledEngine, inputs.ToArray());
     }
 
@@ -163,7 +188,7 @@ public static class RealCellsJob
                 engine.Resolve(mover, state, target);
     }
 
-    private static bool Matches(in RealCellsFrame expected, in MoveResult r)
+    private static bool Matches(in ParityFrame expected, in MoveResult r)
     {
         var n = r.Next;
         return Vector3.Distance(expected.Position, n.Position.Frame.Origin) <= Tolerance && expected.Cell == n.Position.CellId

@@ -82,18 +82,31 @@ internal static class BodyMotion
     }
 
     /// <summary>
-    /// Frame::grotate (CFrame.c:477): turns an orientation by the rotation vector <paramref name="w"/> (axis ×
-    /// angle, world axes), applied on the world side; vectors shorter than EPSILON do nothing.
+    /// Frame::grotate (CFrame.c:477, acclient.c:357421): turns an orientation by the rotation vector
+    /// <paramref name="w"/> (axis × angle, world axes), applied on the world side; vectors shorter than
+    /// EPSILON do nothing. As retail: in double (its x87 runs at 53 bits), the product in retail's order,
+    /// then normalized by set_rotate (times the reciprocal length; an invalid result keeps the old one).
     /// </summary>
     public static Quaternion Rotate(Quaternion q, Vector3 w)
     {
-        float length2 = w.LengthSquared();
-        if (length2 < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
+        double length2 = (double)w.X * w.X + (double)w.Y * w.Y + (double)w.Z * w.Z;
+        if (length2 < (double)PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
             return q;
-        float theta = MathF.Sqrt(length2);
-        float s = MathF.Sin(theta * 0.5f) / theta;
-        var r = new Quaternion(w.X * s, w.Y * s, w.Z * s, MathF.Cos(theta * 0.5f));
-        return Quaternion.Normalize(Quaternion.Concatenate(q, r));
+        double theta = Math.Sqrt(length2);
+        float thetaInv = (float)(1.0 / theta);
+        double sinHalf = Math.Sin(theta * 0.5);
+        float c = (float)Math.Cos(theta * 0.5);
+        float f = (float)(sinHalf * w.X * thetaInv);
+        float g = (float)(thetaInv * sinHalf * w.Y);
+        double h = sinHalf * thetaInv * w.Z;
+        double qw = q.W, qx = q.X, qy = q.Y, qz = q.Z;
+        var frame = new Frame(Vector3.Zero, q);
+        frame.SetRotate(
+            (float)(c * qw - f * qx - g * qy - h * qz),
+            (float)(c * qx + g * qz + f * qw - h * qy),
+            (float)(c * qy - f * qz + h * qx + g * qw),
+            (float)(f * qy + c * qz - g * qx + h * qw));
+        return frame.Orientation;
     }
 
     /// <summary>

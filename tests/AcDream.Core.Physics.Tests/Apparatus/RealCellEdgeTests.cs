@@ -1,7 +1,6 @@
 using System.IO;
 using AcDream.Core.Physics;
-using AcDream.Core.Physics.Bench.RealCells;
-using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Tests.Robustness;
 
 namespace AcDream.Core.Physics.Tests.Apparatus;
@@ -13,36 +12,34 @@ namespace AcDream.Core.Physics.Tests.Apparatus;
 /// </summary>
 public class RealCellEdgeTests
 {
-    private static (RealCellsMover Mover, MoveResult[] Results)? Run(string file, string moverName)
+    private static (ParityRun Run, MoveResult[] Results)? Run(string file, string moverName)
     {
         string? shared = StackDepthTests.SharedFolder();
         if (shared is null)
             return null;
-        var reference = RealCellsFile.Load(Path.Combine(shared, "real-cells", file + ".json.gz"));
-        var scene = SceneLoader.LoadFile(reference.ScenePath);
-        var mover = reference.Movers.Single(m => m.Name == moverName);
-        var description = scene.Movers.Single(m => m.Name == moverName).Description;
-        var engine = new PhysicsEngine(scene.World);
-        var state = mover.Start;
-        var results = new MoveResult[mover.Frames.Length];
+        var set = ParityReader.ReadFile(Path.Combine(shared, "real-cells", file + ".json.gz"));
+        var run = set.Runs.Single(r => r.Name == moverName);
+        var engine = new PhysicsEngine(set.World);
+        var state = run.Start;
+        var results = new MoveResult[run.Frames.Length];
         for (int i = 0; i < results.Length; i++)
         {
             var target = state.Position;
-            target.Frame.Origin += mover.Frames[i].Offset;
-            results[i] = engine.Resolve(description, state, target);
+            target.Frame.Origin += run.Frames[i].Offset;
+            results[i] = engine.Resolve(run.Mover, state, target);
             state = results[i].Next;
-            Assert.True(Vector3.Distance(mover.Frames[i].Position, state.Position.Frame.Origin) <= 1e-4f,
-                $"{moverName} frame {i}: expected {mover.Frames[i].Position}, got {state.Position.Frame.Origin}");
-            Assert.Equal(mover.Frames[i].Accepted, results[i].Succeeded);
+            Assert.True(Vector3.Distance(run.Frames[i].Position, state.Position.Frame.Origin) <= 1e-4f,
+                $"{moverName} frame {i}: expected {run.Frames[i].Position}, got {state.Position.Frame.Origin}");
+            Assert.Equal(run.Frames[i].Accepted, results[i].Succeeded);
         }
-        return (mover, results);
+        return (run, results);
     }
 
     /// <summary>Cottage B's cellar lip: the 4 m/s walker steps up in frame 56 and is refused from frame 58 to the end.</summary>
     [Fact]
     public void CottageB_SlowWalker_StopsForGoodAtTheCellarLip()
     {
-        if (Run("cottageB-ramp", "ascent-x153.9-4mps") is not var (mover, results))
+        if (Run("cottageB-ramp", "ascent-x153.9-4mps") is not var (run, results))
             return; // the shared data is not on this machine
         Assert.True(results[57].Succeeded);
         Assert.All(results.Skip(58), r => Assert.False(r.Succeeded));
@@ -50,7 +47,7 @@ public class RealCellEdgeTests
         Support.AssertVec.Near(new Vector3(0, -1, 0), stuck.SlidingNormal, 1e-6f);
         Assert.Equal(94.005f, stuck.Position.Frame.Origin.Z, 3);
         Assert.InRange(10.353f - stuck.Position.Frame.Origin.Y, 0.24f, 0.48f); // centre outside the floor's edge
-        Assert.Equal(90, mover.Frames.Length);
+        Assert.Equal(90, run.Frames.Length);
     }
 
     /// <summary>Cottage A's ramp top: with the 1.5 m step-down the mover ends 0.09–0.15 m past the top edge (y 5.802).</summary>

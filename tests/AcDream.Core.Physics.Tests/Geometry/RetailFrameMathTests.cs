@@ -163,4 +163,22 @@ public class RetailFrameMathTests
         Assert.Equal(2f, placed.Origin.Z);
         Assert.True(Quaternion.Dot(Yaw30, placed.Orientation) > 0.9999999f);
     }
+
+    [Fact]
+    public void GRotate_TurnsOnTheWorldSide_AndIgnoresTinyVectors()
+    {
+        // A quarter turn about Z from the identity: (cos 45°, 0, 0, sin 45°).
+        var quarter = AcDream.Core.Physics.Body.BodyMotion.Rotate(Quaternion.Identity, new Vector3(0, 0, MathF.PI / 2));
+        Assert.Equal(0.70710677f, quarter.W, 6);
+        Assert.Equal(0.70710677f, quarter.Z, 6);
+        // World side: after the Z turn local X points along world Y, and a turn about world X takes world Y
+        // to world Z.
+        var both = AcDream.Core.Physics.Body.BodyMotion.Rotate(quarter, new Vector3(MathF.PI / 2, 0, 0));
+        var x = new Frame(Vector3.Zero, both).LocalToGlobalVec(Vector3.UnitX);
+        Assert.Equal(0f, x.X, 6);
+        Assert.Equal(0f, x.Y, 6);
+        Assert.Equal(1f, x.Z, 6);
+        // Shorter than EPSILON: unchanged to the bit.
+        Assert.Equal(Yaw30, AcDream.Core.Physics.Body.BodyMotion.Rotate(Yaw30, new Vector3(0, 0, 1e-4f)));
+    }
 }
