@@ -73,4 +73,25 @@ public class ShapeLimitTests
         Assert.Equal(TransitionState.Collided, state);
         Near(new Vector3(0.3f, 0, -0.9f), CheckOrigin(t));
     }
+
+    [Fact]
+    public void CylinderSlide_OfTheUpperSphere_IsMeasuredFromItsOwnCurrentCentre()
+    {
+        // A grounded two-sphere mover (r 0.5 at z 0.5 and 1.5) under a floating post (low point z 1,
+        // radius 0.5, height 1): sphere 0's top (z 1.0) misses it by EPSILON, sphere 1 hits. From (−1.2, 0)
+        // towards (−0.9, 0.3): the normal is radial, (−1, 0, 0); the crease with the floor (+Z) is (0, 1, 0);
+        // sphere 1's move (0.3, 0.3, 0) keeps only (0, 0.3, 0): the check origin becomes (−1.2, 0.3, 0).
+        var t = new Transition(new PhysicsWorld());
+        t.SpherePath.InitSphere(new[] { new Sphere(new Vector3(0, 0, 0.5f), 0.5f), new Sphere(new Vector3(0, 0, 1.5f), 0.5f) }, 1f);
+        t.SpherePath.InitPath(null, new Position(CellId, new Vector3(-1.2f, 0, 0)), new Position(CellId, new Vector3(-0.9f, 0.3f, 0)));
+        t.SpherePath.SetCheckPos(new Position(CellId, new Vector3(-0.9f, 0.3f, 0)), null);
+        t.SpherePath.WalkInterp = 1f;
+        t.ObjectInfo.State = ObjectInfoState.Contact | ObjectInfoState.OnWalkable;
+        t.ObjectInfo.StepUpHeight = 0.1f;
+        t.CollisionInfo.SetContactPlane(new Plane(Vector3.UnitZ, 0f), isWater: false);
+        var floating = new CylSphere(new Vector3(0, 0, 1f), 0.5f, 1f);
+
+        Assert.Equal(TransitionState.Slid, CylSphereCollision.IntersectsSphere(floating, t));
+        Near(new Vector3(-1.2f, 0.3f, 0), CheckOrigin(t));
+    }
 }
