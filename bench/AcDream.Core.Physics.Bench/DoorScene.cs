@@ -49,7 +49,8 @@ public sealed class DoorScene
     /// <param name="extraObjects">Props to register besides the door.</param>
     /// <param name="seed">Seed of the props' placement.</param>
     /// <param name="nearShare">Put one prop in a hundred in the door's own cell (true), or every prop elsewhere (false).</param>
-    public static DoorScene Create(int extraObjects = 0, int seed = 1234, bool nearShare = true)
+    /// <param name="allInDoorCell">Put every prop in the door's own cell (at least 4 m from the door); overrides <paramref name="nearShare"/>.</param>
+    public static DoorScene Create(int extraObjects = 0, int seed = 1234, bool nearShare = true, bool allInDoorCell = false)
     {
         var world = new PhysicsWorld();
         world.Cells.AddLandblock(Terrain.Flat(Landblock, 0f));
@@ -57,15 +58,15 @@ public sealed class DoorScene
         world.Objects.Register(DoorId, door, At(DoorOrigin), 1f, (PhysicsState)0x10008);
         var reference = new ReferenceScene();
         reference.AddObject(door, new Frame(DoorOrigin));
-        AddProps(world, extraObjects, seed, nearShare);
+        AddProps(world, extraObjects, seed, nearShare, allInDoorCell);
         return new DoorScene(world, reference);
     }
 
     /// <summary>
-    /// Registers props: one in a hundred in the door's 24 m cell (at least 4 m from the door), the rest
-    /// anywhere else in the landblock. Props alternate between a barrel (a cylinder) and a rock (a sphere).
+    /// Registers props: one in a hundred (or all) in the door's 24 m cell (at least 4 m from the door), the
+    /// rest anywhere else in the landblock. Props alternate between a barrel (a cylinder) and a rock (a sphere).
     /// </summary>
-    private static void AddProps(PhysicsWorld world, int count, int seed, bool nearShare)
+    private static void AddProps(PhysicsWorld world, int count, int seed, bool nearShare, bool allInDoorCell)
     {
         if (count <= 0)
             return;
@@ -76,7 +77,7 @@ public sealed class DoorScene
         for (int i = 0; i < count; i++)
         {
             Vector3 p;
-            if (nearShare && i % 100 == 0)
+            if (allInDoorCell || (nearShare && i % 100 == 0))
             {
                 do p = new Vector3(cellMin + 1 + 22 * rng.NextSingle(), cellMin + 1 + 22 * rng.NextSingle(), 0);
                 while (Vector2.Distance(new Vector2(p.X, p.Y), new Vector2(DoorOrigin.X, DoorOrigin.Y)) < 4f);

@@ -4,17 +4,30 @@ using BenchmarkDotNet.Running;
 
 namespace AcDream.Core.Physics.Bench;
 
-/// <summary>Entry point: <c>door</c> runs the door job; anything else goes to BenchmarkDotNet's switcher.</summary>
+/// <summary>
+/// Entry point: <c>door</c> runs the door job, <c>body</c> the body-step job, <c>queries</c> times the world
+/// queries, <c>compile</c> the BSP compiler's cost job, <c>registry</c> the registry's removal and move
+/// costs, <c>realcells</c> the real-cells job, <c>trace</c>
+/// prints one door approach; anything else goes to BenchmarkDotNet's switcher.
+/// </summary>
 public static class Program
 {
-    /// <summary>Runs the door job or the benchmarks selected on the command line.</summary>
+    /// <summary>Runs the job named first on the command line, or the benchmarks selected by the rest.</summary>
     public static int Main(string[] args)
     {
-        if (args.Length > 0 && args[0] == "door")
-            return DoorJob.Run(args.Skip(1).ToArray());
-        if (args.Length > 0 && args[0] == "trace")
-            return DoorTrace.Run(args.Skip(1).ToArray());
-        BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
-        return 0;
+        string[] rest = args.Skip(1).ToArray();
+        switch (args.FirstOrDefault())
+        {
+            case "door": return DoorJob.Run(rest);
+            case "body": return BodyJob.Run(rest);
+            case "queries": return Queries.QueryJob.Run(rest);
+            case "compile": return Compile.CompileJob.Run(rest);
+            case "registry": return Registry.RegistryJob.Run();
+            case "realcells": return RealCells.RealCellsJob.Run(rest);
+            case "trace": return DoorTrace.Run(rest);
+            default:
+                BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+                return 0;
+        }
     }
 }

@@ -5,6 +5,7 @@ using System.IO;
 using System.Numerics;
 using System.Text;
 using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 
@@ -28,17 +29,32 @@ public static class Program
           replay SCENE TRAJ [--tolerance METRES] [--diag]
                                         re-run a recorded trajectory; exit 0 when it matches,
                                         1 with the first difference
+          query SCENE floor X Y Z [DROP]
+                                        the highest walkable surface at or below the point
+                                        (within DROP metres, default 100)
+          query SCENE cell X Y Z        the cell that holds the point (indoor first)
+          query SCENE near X Y Z R      the objects overlapping a sphere
+          query SCENE cast X0 Y0 Z0 X1 Y1 Z1 R
+                                        the first contact of a sphere swept from one point
+                                        to the other (R 0: a ray)
+          plot SCENE [TRAJ] --out FILE.png
+                                        draw the scene (top and side views) with each
+                                        mover's path coloured by outcome
+          parity DIR                    check the engine against every parity file (*.json.gz) in
+                                        DIR: one line per file; exit 1 when a file misses its
+                                        threshold
           help                          this text
 
         SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
+        Query coordinates are landblock-local to the scene's first landblock.
         --diag prints each frame's structured diagnostics events.
-        Exit codes: 0 success, 1 replay mismatch, 2 usage error or bad file.
+        Exit codes: 0 success, 1 replay or parity mismatch, 2 usage error or bad file.
         """;
 
     /// <summary>Runs the tool.</summary>
     public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
 
-    private sealed class UsageException(string message) : Exception(message);
+    internal sealed class UsageException(string message) : Exception(message);
 
     private sealed class Options
     {
@@ -78,7 +94,7 @@ public static class Program
                     foreach (string name in SceneLibrary.Names)
                     {
                         var scene = SceneLibrary.Load(name);
-                        stdout.WriteLine($"{name,-10} {scene.Description}");
+                        stdout.WriteLine(Printable($"{name,-10} {scene.Description}"));
                     }
                     return 0;
                 case "run":
@@ -92,6 +108,19 @@ public static class Program
                 case "replay":
                     Expect(options, 2, "replay needs SCENE and TRAJ");
                     return Replay(options, stdout);
+                case "query":
+                    if (options.Positional.Count < 2)
+                        throw new UsageException("query needs SCENE and floor, cell, near or cast");
+                    return QueryCommand.Run(LoadScene(options.Positional[0]), options.Positional.ToArray().AsSpan(1), stdout);
+                case "plot":
+                    if (options.Positional.Count is < 1 or > 2)
+                        throw new UsageException(options.Positional.Count < 1 ? "plot needs SCENE" : $"unexpected argument '{options.Positional[2]}'");
+                    if (options.Out is null)
+                        throw new UsageException("plot needs --out FILE.png");
+                    return PlotCommand.Run(LoadScene(options.Positional[0]), options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null, options.Out, stdout);
+                case "parity":
+                    Expect(options, 1, "parity needs DIR");
+                    return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
                 default:
                     throw new UsageException($"unknown command '{command}'");
             }
@@ -120,8 +149,33 @@ public static class Program
 
     private static int Fail(TextWriter stderr, string message, bool usage)
     {
-        stderr.WriteLine($"acdream-physics: {message}" + (usage ? " (run 'acdream-physics help' for usage)" : string.Empty));
+        stderr.WriteLine($"acdream-physics: {Printable(message)}" + (usage ? " (run 'acdream-physics help' for usage)" : string.Empty));
         return 2;
+    }
+
+    /// <summary>
+    /// Text from a file made safe for a terminal, on one line: control characters (newlines, escape
+    /// sequences, bells) and invisible format characters (such as bidirectional overrides) are written as
+    /// <c>\uXXXX</c>.
+    /// </summary>
+    public static string Printable(string text)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        StringBuilder? escaped = null;
+        for (int i = 0; i < text.Length; i++)
+        {
+            char c = text[i];
+            bool unsafeChar = char.IsControl(c) || CharUnicodeInfo.GetUnicodeCategory(c) == UnicodeCategory.Format;
+            if (unsafeChar && escaped is null)
+                escaped = new StringBuilder(text, 0, i, text.Length + 16);
+            if (escaped is null)
+                continue;
+            if (unsafeChar)
+                escaped.Append(CultureInfo.InvariantCulture, $"\\u{(int)c:X4}");
+            else
+                escaped.Append(c);
+        }
+        return escaped?.ToString() ?? text;
     }
 
     private static Options Parse(string[] args)
@@ -179,16 +233,29 @@ public static class Program
         throw new UsageException($"scene '{arg}' is neither a file nor a built-in scene ({string.Join(", ", SceneLibrary.Names)})");
     }
 
+    /// <summary>Runs <paramref name="work"/>; a bad value met while running is reported with the scene's file (or built-in name) first.</summary>
+    private static T NamingScene<T>(string sceneArg, Func<T> work)
+    {
+        try
+        {
+            return work();
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException(string.Empty, $"{sceneArg}: {ex.Message}", ex);
+        }
+    }
+
     private static int RunScene(Options o, TextWriter stdout, bool table)
     {
         var scene = LoadScene(o.Positional[0]);
         Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
-        var trajectory = SceneRunner.Run(scene, diag);
+        var trajectory = NamingScene(o.Positional[0], () => SceneRunner.Run(scene, diag));
         if (table)
             PrintTable(stdout, trajectory);
         if (o.Out is not null)
             File.WriteAllText(o.Out, trajectory.ToJson(), new UTF8Encoding(false));
-        stdout.WriteLine(Summary(scene, trajectory) + (o.Out is null ? string.Empty : $"; trajectory written to {o.Out}"));
+        stdout.WriteLine(Printable(Summary(scene, trajectory) + (o.Out is null ? string.Empty : $"; trajectory written to {o.Out}")));
         return 0;
     }
 
@@ -196,27 +263,31 @@ public static class Program
     {
         var scene = LoadScene(o.Positional[0]);
         string path = o.Positional[1];
-        Trajectory trajectory;
+        var trajectory = LoadTrajectory(path);
+        Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
+        var result = NamingScene(o.Positional[0], () => TrajectoryReplay.Replay(scene, trajectory, o.Tolerance, diag));
+        foreach (string note in result.Notes)
+            stdout.WriteLine(Printable($"note: {note}"));
+        if (result.Matches)
+        {
+            stdout.WriteLine(Printable($"{scene.Name}: replay matches ({result.FramesCompared} frames, {trajectory.Movers.Count} movers, tolerance {F(result.Tolerance)} m)"));
+            return 0;
+        }
+        stdout.WriteLine(Printable($"{scene.Name}: replay differs after {result.FramesCompared} matching frames"));
+        stdout.WriteLine(Printable($"  {result.FirstDifference}"));
+        return 1;
+    }
+
+    private static Trajectory LoadTrajectory(string path)
+    {
         try
         {
-            trajectory = Trajectory.LoadFile(path);
+            return Trajectory.LoadFile(path);
         }
         catch (SceneFormatException ex)
         {
             throw new SceneFormatException(string.Empty, $"{path}: {ex.Message}", ex);
         }
-        Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
-        var result = TrajectoryReplay.Replay(scene, trajectory, o.Tolerance, diag);
-        foreach (string note in result.Notes)
-            stdout.WriteLine($"note: {note}");
-        if (result.Matches)
-        {
-            stdout.WriteLine($"{scene.Name}: replay matches ({result.FramesCompared} frames, {trajectory.Movers.Count} movers, tolerance {F(result.Tolerance)} m)");
-            return 0;
-        }
-        stdout.WriteLine($"{scene.Name}: replay differs after {result.FramesCompared} matching frames");
-        stdout.WriteLine($"  {result.FirstDifference}");
-        return 1;
     }
 
     private static string F(float v) => v.ToString("0.#####", CultureInfo.InvariantCulture);
@@ -231,7 +302,7 @@ public static class Program
                 var fr = mover.Frames[f];
                 string hit = fr.CollidedObjects.Count == 0 ? "-" : string.Join(",", Hexes(fr.CollidedObjects));
                 string slide = fr.SlidingNormalValid ? $"{fr.SlidingNormal.X:F2},{fr.SlidingNormal.Y:F2}" : "-";
-                w.WriteLine($"{mover.Name,-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}");
+                w.WriteLine($"{Printable(mover.Name),-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}");
             }
     }
 
@@ -256,7 +327,7 @@ public static class Program
 
     private static void PrintDiagnostics(TextWriter w, FrameDiagnostics d)
     {
-        w.WriteLine($"# {d.MoverName} frame {d.Frame}: {d.Events.Count} events");
+        w.WriteLine($"# {Printable(d.MoverName)} frame {d.Frame}: {d.Events.Count} events");
         foreach (var e in d.Events)
         {
             string text = e.Kind switch

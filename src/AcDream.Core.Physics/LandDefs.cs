@@ -9,6 +9,24 @@ public static class LandDefs
     /// <summary>The lowest cell index of an indoor env cell; 1..64 are the 8×8 outdoor land cells.</summary>
     public const uint FirstEnvCell = 0x100;
 
+    /// <summary>
+    /// True for a landblock id (the high 16 bits of a cell id) inside retail's world: its x (high byte) and
+    /// y (low byte) are both at most 0xFE, the world being 255 × 255 landblocks of 8 × 8 cells, global
+    /// land-cell coordinates 0..2039 (retail LandDefs::inbound_valid_cellid, blockid_to_lcoord).
+    /// </summary>
+    public static bool IsValidLandblock(uint landblock) => landblock <= 0xFFFF && (landblock >> 8) < BlocksPerSide && (landblock & 0xFF) < BlocksPerSide;
+
+    /// <summary>
+    /// True for a cell id retail accepts as a cell of its world (LandDefs::inbound_valid_cellid, acclient
+    /// 0x004979A0): a valid landblock (<see cref="IsValidLandblock"/>) and a cell part 1..0x40 (outdoor) or
+    /// 0x100..0xFFFD (indoor). Retail also accepts 0xFFFF, the landblock's own id, which is no cell.
+    /// </summary>
+    public static bool IsValidCellId(uint cellId)
+    {
+        uint index = cellId & 0xFFFF;
+        return IsValidLandblock(cellId >> 16) && ((index >= 1 && index <= 0x40) || (index >= FirstEnvCell && index <= 0xFFFD));
+    }
+
     /// <summary>Landblocks along each axis of the world, 0x00..0xFE (retail LandDefs::get_vars: 255).</summary>
     public const int BlocksPerSide = 255;
 

@@ -23,13 +23,22 @@ public static class PhysicsConstants
     /// <summary>Z of a normal steep enough to land on when not walking: cos(85°) (ACE PhysicsGlobals.LandingZ).</summary>
     public const float LandingZ = 0.0871557f;
 
-    /// <summary>Gravity along world Z, in m/s².</summary>
+    /// <summary>
+    /// Gravity along world Z, in m/s²: retail PhysicsGlobals::gravity = -9.8000002 (acclient_data.h:6877, the
+    /// float nearest -9.8), applied by CPhysicsObj::calc_acceleration to a body with the Gravity state.
+    /// </summary>
     public const float Gravity = -9.8f;
 
-    /// <summary>Speed limit of a physics object, m/s.</summary>
+    /// <summary>
+    /// Speed limit of a physics object, m/s: CPhysicsObj::UpdatePhysicsInternal and set_velocity rescale a
+    /// longer velocity to this length (CPhysicsObj.c:2182-2190, compared as 50.0 * 50.0).
+    /// </summary>
     public const float MaxVelocity = 50.0f;
 
-    /// <summary>Below this speed a moving object is considered still, m/s.</summary>
+    /// <summary>
+    /// Below this speed a moving object is stopped, m/s: UpdatePhysicsInternal zeroes the velocity when
+    /// |v|² − 0.25² &lt; EPSILON (CPhysicsObj.c:2192), with |v|² taken before friction.
+    /// </summary>
     public const float SmallVelocity = 0.25f;
 
     /// <summary>
@@ -46,4 +55,63 @@ public static class PhysicsConstants
 
     /// <summary>Side length of one outdoor land cell in metres.</summary>
     public const float LandCellLength = 24.0f;
+
+    // ---- the body (CPhysicsObj::update_object and friends) ----
+
+    /// <summary>
+    /// The shortest physics tick, seconds: retail's CPhysics::UseTime updates no object until 1/30 s has
+    /// passed since its last update (CPhysics.c:222, MIN_QUANTUM_93 = 1.0 / 30.0 at CPhysics.c:491), and
+    /// CPhysicsObj::update_object steps a remainder after whole max quanta only when it is longer than this
+    /// (MIN_QUANTUM_97 = 1.0 / 30.0 at CPhysicsObj.c:7957, tested at 7557); a shorter remainder waits for the next tick.
+    /// </summary>
+    public const double MinQuantum = 1.0 / 30.0;
+
+    /// <summary>
+    /// The longest single quantum, seconds: update_object steps a longer elapsed time in quanta of this
+    /// length (MAX_QUANTUM_97 = 1.0 / 5.0, CPhysicsObj.c:7963; loop at 7546-7556). ACE uses 0.1 with a note
+    /// that 0.2 "is buggy with MoveToManager turning"; retail is 0.2 and so is this library.
+    /// </summary>
+    public const double MaxQuantum = 1.0 / 5.0;
+
+    /// <summary>
+    /// An elapsed time longer than this is dropped, seconds: update_object resynchronizes its clock and
+    /// moves nothing (CPhysicsObj.c:7544, "v6 &lt;= 2.0"). ACE PhysicsGlobals.HugeQuantum.
+    /// </summary>
+    public const double HugeQuantum = 2.0;
+
+    /// <summary>A physics object's default friction coefficient (DEFAULT_FRICTION = 0.94999999, acclient_data.h:1430).</summary>
+    public const float DefaultFriction = 0.95f;
+
+    /// <summary>A physics object's default elasticity (DEFAULT_ELASTICITY = 0.050000001, acclient_data.h:1431).</summary>
+    public const float DefaultElasticity = 0.05f;
+
+    /// <summary>
+    /// The largest elasticity retail's setter accepts: CPhysicsObj::set_elasticity stores 0.1 for anything
+    /// larger and 0 for anything negative (CPhysicsObj.c:1503-1525). ACE PhysicsGlobals.MaxElasticity.
+    /// </summary>
+    public const float MaxElasticity = 0.1f;
+
+    /// <summary>
+    /// calc_friction leaves the velocity alone when it leaves the contact plane at this speed or faster,
+    /// m/s (v·N ≥ 0.25, CPhysicsObj.c:556 and 582).
+    /// </summary>
+    public const float FrictionSeparationSpeed = 0.25f;
+
+    /// <summary>A sledding body's friction when fast on a slope steeper than 10° (frict = 0.2, CPhysicsObj.c:558).</summary>
+    public const float SleddingFriction = 0.2f;
+
+    /// <summary>
+    /// Below this squared speed (1.25², m²/s²) a sledding body gets friction 1 (stops at once) (calc_friction,
+    /// CPhysicsObj.c:566-575).
+    /// </summary>
+    public const float SleddingSlowSpeedSquared = 1.5625f;
+
+    /// <summary>
+    /// From this squared speed (2.5², m²/s²) a sledding body on a slope steeper than 10° gets
+    /// <see cref="SleddingFriction"/> (calc_friction, CPhysicsObj.c:568).
+    /// </summary>
+    public const float SleddingFastSpeedSquared = 6.25f;
+
+    /// <summary>cos(10°): a contact plane at least this flat counts as level for sledding friction (cos(0.1745329251994329), CPhysicsObj.c:568).</summary>
+    public const float SleddingLevelZ = 0.98480775f;
 }

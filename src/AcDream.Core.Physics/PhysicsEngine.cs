@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics;
 /// One engine per thread: it reuses one <see cref="Transition"/> and allocates nothing per call once warm.
 /// The world may be shared by engines on several threads while nobody modifies it.
 /// </summary>
-public sealed class PhysicsEngine
+public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
     private uint[] _collided = new uint[8];
@@ -42,41 +42,62 @@ public sealed class PhysicsEngine
     /// in the same or a neighbouring landblock's frame, labelled with the start cell or any cell of the
     /// target's landblock). Throws <see cref="ArgumentException"/> naming the field, before anything is
     /// changed, for non-finite or out-of-range input (coordinates beyond ±<see cref="InputLimits.MaxCoordinate"/>),
-    /// zero-length rotations, a contact plane whose normal is not a unit vector, and unknown cells (the
-    /// state's cell, the target's cell label and a non-zero contact-plane cell must all be in the world).
+    /// zero-length rotations or rotations whose length overflows, a contact plane whose normal is not a unit
+    /// vector, unknown cells (the state's cell, the target's cell label and a non-zero contact-plane cell
+    /// must all be in the world), and a state whose origin lies more than
+    /// <see cref="InputLimits.MaxDistanceFromCell"/> plus the mover's reach outside its cell.
     /// A motion cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps (kilometres in one
     /// frame) is not an error: as in retail it is refused at once, with <see cref="MoveResult.Succeeded"/>
     /// false and <see cref="MoveResult.Next"/> equal to <paramref name="state"/>.
     /// Thread safety: one engine per thread; engines on several threads may share a world as long as
     /// nothing registers, moves or unregisters objects or adds cells meanwhile.
     /// </summary>
-    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
+    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target) => ResolveCore(mover, state, target, 0);
+
+    /// <summary>
+    /// <see cref="Resolve"/> with the transition's stationary-fall counter seeded, as retail's
+    /// CPhysicsObj::transition seeds it from the object's transient state (0 for a mover without a body).
+    /// </summary>
+    private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        Guard.Frame(state.Position.Frame, "state.position");
-        Guard.Frame(target.Frame, "target");
         var begin = state.Position;
-        begin.Frame.Orientation = Guard.Rotation(begin.Frame.Orientation, "state.position.orientation");
-        target.Frame.Orientation = Guard.Rotation(target.Frame.Orientation, "target.orientation");
-        var cells = _transition.World.Cells;
-        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
-        cells.GetRequired(target.CellId, "target.cell");
-        if (state.Contact || state.ContactPlaneCellId != 0)
-        {
-            Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
-            Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
-            if (state.ContactPlaneCellId != 0)
-                cells.GetRequired(state.ContactPlaneCellId, "state.contactPlaneCellId");
-        }
-        if (state.SlidingNormalValid)
-            Guard.Finite(state.SlidingNormal, "state.slidingNormal");
+        Guard.Pose(ref begin.Frame, "state.position");
+        Guard.Pose(ref target.Frame, "target");
+        var cell = ValidateState(mover, state, begin, target.CellId);
 
         var t = _transition;
         Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
-        t.SpherePath.InitPath(cell, begin, target);
+        t.SpherePath.InitPath(cell, in begin, in target);
+        t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition();
         return Collect(t, ok, state);
+    }
+
+    /// <summary>
+    /// Checks a mover's state (its pose already checked into <paramref name="begin"/>: cell, distance from
+    /// it, contact plane, sliding normal) and that <paramref name="targetCellId"/> is loaded; returns the
+    /// state's cell. The cell ids are usually one and the same: each distinct id is looked up once.
+    /// </summary>
+    private World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
+    {
+        var cells = _transition.World.Cells;
+        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
+        if (targetCellId != begin.CellId)
+            cells.GetRequired(targetCellId, "target.cell");
+        if (state.Contact || state.ContactPlaneCellId != 0)
+        {
+            Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
+            Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
+            uint planeCell = state.ContactPlaneCellId;
+            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId)
+                cells.GetRequired(planeCell, "state.contactPlaneCellId");
+        }
+        if (state.SlidingNormalValid)
+            Guard.Finite(state.SlidingNormal, "state.slidingNormal");
+        return cell;
     }
 
     /// <summary>
@@ -87,9 +108,9 @@ public sealed class PhysicsEngine
     public MoveResult Place(MoverDescription mover, Position position)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        Guard.Frame(position.Frame, "position");
-        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
+        Guard.Pose(ref position.Frame, "position");
         var cell = _transition.World.Cells.GetRequired(position.CellId, "position.cell");
+        Guard.NearCell(cell.DistanceOutside(position.Frame.Origin), mover.Reach, position.CellId, position.Frame.Origin, "position.origin");
         var t = _transition;
         var airborne = MoverState.Airborne(position);
         Prepare(t, mover, airborne);

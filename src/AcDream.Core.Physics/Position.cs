@@ -38,7 +38,7 @@ public struct Position
     /// <exception cref="ArgumentException">The landblock is not in the world, the point is not finite, or it falls outside the world.</exception>
     public static Position Outdoor(uint landblock, Vector3 local)
     {
-        if (landblock > 0xFFFF || (landblock >> 8) >= LandDefs.BlocksPerSide || (landblock & 0xFF) >= LandDefs.BlocksPerSide)
+        if (!LandDefs.IsValidLandblock(landblock))
             throw new ArgumentException($"landblock: must be 0xXXYY with X and Y in 0x00..0xFE, got 0x{landblock:X}.", nameof(landblock));
         Guard.Finite(local, "local");
         uint cell = (landblock << 16) | 1;
@@ -75,15 +75,29 @@ public struct Position
     public readonly Vector3 GetOffset(in Position other) =>
         other.Frame.Origin - Frame.Origin + LandDefs.BlockOffset(CellId, other.CellId);
 
-    /// <summary>Maps a point local to <paramref name="other"/> into this position's local space.</summary>
-    public readonly Vector3 LocalToLocal(in Position other, Vector3 point)
+    /// <summary>
+    /// Maps a point local to <paramref name="other"/> into this position's local space (retail
+    /// Position::localtolocal, acclient.c:143794: through <paramref name="other"/>'s matrix, across
+    /// landblocks, then through the transpose of this position's).
+    /// </summary>
+    public readonly Vector3 LocalToLocal(in Position other, Vector3 point) =>
+        LocalToLocal(Frame.Matrix, other, other.Frame.Matrix, point);
+
+    /// <summary><see cref="LocalToLocal(in Position, Vector3)"/> with both frames' matrices already computed.</summary>
+    internal readonly Vector3 LocalToLocal(in RotationMatrix mine, in Position other, in RotationMatrix others, Vector3 point)
     {
-        var inOtherBlock = other.Frame.LocalToGlobal(point);
-        return Frame.GlobalToLocal(inOtherBlock + LandDefs.BlockOffset(CellId, other.CellId));
+        var inOtherBlock = others.PositionToGlobal(point, other.Frame.Origin);
+        return mine.FrameToLocal(LandDefs.BlockOffset(CellId, other.CellId) + inOtherBlock, Frame.Origin);
     }
 
-    /// <summary>Maps a local point into this position's landblock space.</summary>
-    public readonly Vector3 LocalToGlobal(Vector3 point) => Frame.LocalToGlobal(point);
+    /// <summary>Maps a local point into this position's landblock space (retail Position::localtoglobal).</summary>
+    public readonly Vector3 LocalToGlobal(Vector3 point) => Frame.Matrix.PositionToGlobal(point, Frame.Origin);
+
+    /// <summary>Rotates a local direction into this position's landblock space (retail Position::localtoglobalvec).</summary>
+    public readonly Vector3 LocalToGlobalVec(Vector3 vector) => Frame.Matrix.PositionToGlobal(vector);
+
+    /// <summary>Rotates a landblock-space direction into this position's local space (retail Position::globaltolocalvec: the transpose).</summary>
+    public readonly Vector3 GlobalToLocalVec(Vector3 vector) => Frame.Matrix.PositionToLocal(vector);
 
     /// <inheritdoc />
     public override readonly string ToString() => $"0x{CellId:X8} {Frame.Origin}";

@@ -111,13 +111,14 @@ public static class Reports
     /// The scale table (retail door transition with other objects in the landblock): the cost follows the
     /// objects in the cells the path touches (retail tests every object listed in those cells), not the total.
     /// </summary>
-    public static string ScaleTable(IReadOnlyList<(int Objects, bool NearShare, double Ns)> scale)
+    public static string ScaleTable(IReadOnlyList<(int Objects, int InDoorCell, double Ns)> scale)
     {
+        double alone = scale.FirstOrDefault(r => r.Objects == 0).Ns;
         var sb = new StringBuilder();
-        sb.AppendLine("| Other objects in the landblock | of them in the door's cell | door transition (ns) |");
-        sb.AppendLine("|---:|---:|---:|");
-        foreach (var (objects, nearShare, ns) in scale)
-            sb.AppendLine($"| {objects:N0} | {(nearShare ? (objects + 99) / 100 : 0):N0} | {Ns(ns)} |");
+        sb.AppendLine("| Other objects in the landblock | of them in the door's cell | door transition (ns) | × the door alone |");
+        sb.AppendLine("|---:|---:|---:|---:|");
+        foreach (var (objects, inDoorCell, ns) in scale)
+            sb.AppendLine($"| {objects:N0} | {inDoorCell:N0} | {Ns(ns)} | {(alone > 0 ? (ns / alone).ToString("0.00", CultureInfo.InvariantCulture) : "")} |");
         return sb.ToString();
     }
 

@@ -1,7 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.ExceptionServices;
+using System.Threading;
 using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Bsp;
 
@@ -52,7 +55,7 @@ namespace AcDream.Core.Physics.Bsp;
 /// <para>
 /// Nodes are numbered depth first (node, front subtree, back subtree); the tree's polygon list holds the
 /// (possibly split) polygons in leaf order, an unsplit input polygon keeping its instance.
-/// Recursion depth is at most the number of distinct planes, fine for object-sized meshes.
+/// Recursion depth is at most the number of distinct planes and is limited to <see cref="InputLimits.MaxBspDepth"/>.
 /// </para>
 /// </remarks>
 public static class BspCompiler
@@ -82,12 +85,15 @@ public static class BspCompiler
     /// <param name="polygons">The polygons, counter-clockwise seen from their front (solids: outward).</param>
     /// <param name="name">A name for error messages.</param>
     /// <returns>A validated tree built with <see cref="BspTree.Create"/>.</returns>
-    /// <exception cref="ArgumentException">The list is null or empty, or an entry is null.</exception>
+    /// <exception cref="ArgumentException">The list is null or empty, an entry is null, the list holds more than
+    /// <see cref="InputLimits.MaxCompilePolygons"/> polygons, or the tree would be deeper than <see cref="InputLimits.MaxBspDepth"/>.</exception>
     public static BspTree Compile(IReadOnlyList<Polygon> polygons, string name = "polygons")
     {
         ArgumentNullException.ThrowIfNull(polygons);
         if (polygons.Count == 0)
             throw new ArgumentException($"{name}: at least one polygon is needed to compile a BSP tree.", nameof(polygons));
+        if (polygons.Count > InputLimits.MaxCompilePolygons)
+            throw new ArgumentException($"{name}: at most {InputLimits.MaxCompilePolygons} polygons can be compiled into one BSP tree (InputLimits.MaxCompilePolygons), got {polygons.Count}; split the mesh into several parts.", nameof(polygons));
         var set = new List<Polygon>(polygons.Count);
         var min = new Vector3(float.MaxValue);
         var max = new Vector3(float.MinValue);
@@ -104,29 +110,61 @@ public static class BspCompiler
 
         float margin = MathF.Max(1f, 0.1f * Vector3.Distance(min, max));
         var cell = BoxCell(min - new Vector3(margin), max + new Vector3(margin));
-        var root = Build(set, new List<(Plane, bool)>(), cell, set, name);
-        ComputeBounds(root, null);
 
+        // The recursion below takes about a kilobyte of stack per tree level, more than a 256 KB worker
+        // thread has at InputLimits.MaxBspDepth levels, so it runs on a thread of its own with a stack
+        // sized for the limit. Compiling is load-time work; the result does not depend on the thread.
         var nodes = new List<BspNodeData>();
         var outPolygons = new List<Polygon>();
-        var polygonIndex = new Dictionary<Polygon, int>(ReferenceEqualityComparer.Instance);
-        Flatten(root, nodes, outPolygons, polygonIndex);
+        Exception? failure = null;
+        var worker = new Thread(() =>
+        {
+            try
+            {
+                var root = Build(set, [.. new bool[set.Count]], new List<(Plane, bool)>(), cell, set, name);
+                ComputeBounds(root, null);
+                Flatten(root, nodes, outPolygons, new Dictionary<Polygon, int>(ReferenceEqualityComparer.Instance));
+            }
+            catch (Exception e)
+            {
+                failure = e;
+            }
+        }, CompileStackBytes);
+        worker.Start();
+        worker.Join();
+        if (failure is not null)
+            ExceptionDispatchInfo.Capture(failure).Throw();
         return BspTree.Create(outPolygons, nodes, name);
     }
 
-    private static Node Build(List<Polygon> set, List<(Plane Plane, bool Front)> path, List<Vector3[]> cell, IReadOnlyList<Polygon> all, string name)
+    /// <summary>The stack of the compiler's own thread: 16 MB, about sixty times what <see cref="InputLimits.MaxBspDepth"/> levels need.</summary>
+    private const int CompileStackBytes = 16 * 1024 * 1024;
+
+    /// <summary>
+    /// One node of the recursive split. <paramref name="onPath"/> says, for each polygon of the set, whether
+    /// it lies on a split plane of <paramref name="path"/> (such polygons are no candidates); it is carried
+    /// down rather than recomputed: a polygon passed down unchanged is on the child's path when it was on
+    /// the parent's or is coplanar with the new split (the same classifications the full test would make);
+    /// only the pieces of split polygons are tested against the whole path.
+    /// </summary>
+    private static Node Build(List<Polygon> set, List<bool> onPath, List<(Plane Plane, bool Front)> path, List<Vector3[]> cell, IReadOnlyList<Polygon> all, string name)
     {
         // Each split uses up one plane of the input; deeper than that means float drift broke coplanarity.
         if (path.Count > 2 * all.Count + 64)
             throw new InvalidOperationException($"{name}: BSP compile did not converge (depth {path.Count}); the polygons may be too far from the origin for float precision.");
+        // Refused before the recursion gets deep: the tree could not be used anyway (BspTree.Create).
+        if (path.Count >= InputLimits.MaxBspDepth)
+            throw new ArgumentException($"{name}: the compiled BSP tree would be deeper than {InputLimits.MaxBspDepth} levels (InputLimits.MaxBspDepth); a convex solid needs one level per distinct face plane, so split a mesh with that many planes into several parts.", nameof(all));
         int best = -1;
         int bestScore = int.MaxValue;
         for (int i = 0; i < set.Count; i++)
         {
-            if (OnAnyPlane(set[i], path))
+            if (onPath[i])
                 continue;
             var plane = set[i].Plane;
             int front = 0, back = 0, splits = 0;
+            int remaining = set.Count;
+            bool beaten = false;
             foreach (var p in set)
             {
                 switch (Classify(p, plane))
@@ -138,7 +176,18 @@ public static class BspCompiler
                         break;
                     default: splits++; break;
                 }
+                // The score can only end at or above this bound (splits only grow; each polygon left can
+                // narrow |front − back| by one); a candidate that cannot beat the best (ties go to the
+                // earlier one) is dropped without classifying the rest. The choice is unchanged.
+                remaining--;
+                if (bestScore != int.MaxValue && 8 * splits + Math.Max(Math.Abs(front - back) - remaining, 0) >= bestScore)
+                {
+                    beaten = true;
+                    break;
+                }
             }
+            if (beaten)
+                continue;
             int score = 8 * splits + Math.Abs(front - back);
             if (score < bestScore)
             {
@@ -153,19 +202,25 @@ public static class BspCompiler
         var split = set[best].Plane;
         var frontSet = new List<Polygon>();
         var backSet = new List<Polygon>();
-        foreach (var p in set)
+        var frontOnPath = new List<bool>();
+        var backOnPath = new List<bool>();
+        List<(Plane, bool)> frontPath = [.. path, (split, true)];
+        List<(Plane, bool)> backPath = [.. path, (split, false)];
+        for (int i = 0; i < set.Count; i++)
         {
+            var p = set[i];
             switch (Classify(p, split))
             {
-                case Side.Front: frontSet.Add(p); break;
-                case Side.Back: backSet.Add(p); break;
+                case Side.Front: frontSet.Add(p); frontOnPath.Add(onPath[i]); break;
+                case Side.Back: backSet.Add(p); backOnPath.Add(onPath[i]); break;
                 case Side.Coplanar:
-                    (Vector3.Dot(p.Plane.Normal, split.Normal) > 0 ? backSet : frontSet).Add(p);
+                    if (Vector3.Dot(p.Plane.Normal, split.Normal) > 0) { backSet.Add(p); backOnPath.Add(true); }
+                    else { frontSet.Add(p); frontOnPath.Add(true); }
                     break;
                 default:
                     SplitPolygon(p, split, name, out var f, out var b);
-                    if (f is not null) frontSet.Add(f);
-                    if (b is not null) backSet.Add(b);
+                    if (f is not null) { frontSet.Add(f); frontOnPath.Add(OnAnyPlane(f, frontPath)); }
+                    if (b is not null) { backSet.Add(b); backOnPath.Add(OnAnyPlane(b, backPath)); }
                     break;
             }
         }
@@ -174,8 +229,8 @@ public static class BspCompiler
         return new Node
         {
             Plane = split,
-            Front = Build(frontSet, [.. path, (split, true)], ClipCell(cell, flipped), all, name),
-            Back = Build(backSet, [.. path, (split, false)], ClipCell(cell, split), all, name),
+            Front = Build(frontSet, frontOnPath, frontPath, ClipCell(cell, flipped), all, name),
+            Back = Build(backSet, backOnPath, backPath, ClipCell(cell, split), all, name),
         };
     }
 
@@ -298,7 +353,7 @@ public static class BspCompiler
     {
         if (points.Count < 3 || Area(points.ToArray()) < MinFragmentArea)
             return null;
-        return new Polygon(points.ToArray(), sides, name + " (split piece)");
+        return new Polygon(points.ToArray(), sides, name + " (split piece)", cutFromValidPolygon: true);
     }
 
     private static float Area(ReadOnlySpan<Vector3> v)

@@ -94,7 +94,8 @@ public sealed class BspTree
     /// Builds a tree from explicit nodes (retail trees come prebuilt and their order matters, so the
     /// order is kept as given). Validates everything: the root is node 0, every child index is in range,
     /// no node is reached twice (no cycles, no sharing), every node is reachable, polygon indices are in
-    /// range, planes and bounds are finite. Errors name the node and field.
+    /// range, planes and bounds are finite, and no leaf is deeper than <see cref="InputLimits.MaxBspDepth"/>
+    /// levels (so a query is safe on a thread with a 256 KB stack). Errors name the node and field.
     /// </summary>
     public static BspTree Create(IReadOnlyList<Polygon> polygons, IReadOnlyList<BspNodeData> nodes, string name = "bsp")
     {
@@ -109,13 +110,16 @@ public sealed class BspTree
         var parent = new int[nodes.Count];
         Array.Fill(parent, -2);
         parent[0] = -1;
-        var order = new Stack<int>();
-        order.Push(0);
+        var order = new Stack<(int Node, int Depth)>();
+        order.Push((0, 1));
         int visited = 0;
         while (order.Count > 0)
         {
-            int i = order.Pop();
+            var (i, depth) = order.Pop();
             visited++;
+            // The queries recurse once per level: a depth limit keeps them within any thread's stack.
+            if (depth > InputLimits.MaxBspDepth)
+                throw new ArgumentException($"{name}.nodes[{i}]: the tree is deeper than {InputLimits.MaxBspDepth} levels (InputLimits.MaxBspDepth); node {i} is at depth {depth}.", nameof(nodes));
             var node = nodes[i] ?? throw new ArgumentException($"{name}.nodes[{i}]: is null.", nameof(nodes));
             if (node.IsLeaf)
                 continue;
@@ -129,7 +133,7 @@ public sealed class BspTree
                 if (parent[child] != -2)
                     throw new ArgumentException($"{name}.nodes[{i}].{field}: node {child} is referenced more than once (a cycle or a shared subtree).", nameof(nodes));
                 parent[child] = i;
-                order.Push(child);
+                order.Push((child, depth + 1));
             }
         }
         if (visited != nodes.Count)

@@ -19,6 +19,8 @@ public enum SkipReason : byte
     Exempt = 4,
     /// <summary>The mover is the camera and the object a creature.</summary>
     ViewerVsCreature = 5,
+    /// <summary>The object lies beyond reach of the mover's check spheres, so none of its shapes was tested (not a retail rule: retail would test it and find nothing).</summary>
+    OutOfReach = 7,
     /// <summary>The object is ethereal and the path is stepping down.</summary>
     EtherealStepDown = 6,
 }

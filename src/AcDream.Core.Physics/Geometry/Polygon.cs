@@ -27,7 +27,11 @@ public sealed class Polygon
 {
     private readonly Vector3[] _vertices;
 
-    /// <summary>Creates a polygon, validating it (finite vertices, at least 3, non-zero area).</summary>
+    /// <summary>
+    /// Creates a polygon, validating it: 3 to <see cref="InputLimits.MaxPolygonVertices"/> finite vertices,
+    /// non-zero area, planar, convex and counter-clockwise seen from the front, no vertex repeated (within
+    /// <see cref="InputLimits.PolygonTolerance"/>). Errors name the field and the vertex.
+    /// </summary>
     /// <param name="vertices">The vertices, counter-clockwise seen from the front. Copied.</param>
     /// <param name="sides">The sidedness.</param>
     /// <param name="name">A name for error messages (e.g. "polygons[3]").</param>
@@ -35,11 +39,26 @@ public sealed class Polygon
     {
         if (vertices.Length < 3)
             throw new ArgumentException($"{name}: a polygon needs at least 3 vertices, got {vertices.Length}.", nameof(vertices));
+        if (vertices.Length > InputLimits.MaxPolygonVertices)
+            throw new ArgumentException($"{name}.vertices: a polygon has at most {InputLimits.MaxPolygonVertices} vertices (retail stores the count in a signed byte), got {vertices.Length}.", nameof(vertices));
         for (int i = 0; i < vertices.Length; i++)
             Guard.Finite(vertices[i], $"{name}.vertices[{i}]");
         if (!Enum.IsDefined(sides))
             throw new ArgumentException($"{name}.sides: unknown sidedness {(int)sides}.", nameof(sides));
         _vertices = vertices.ToArray();
+        Sides = sides;
+        Plane = MakePlane(_vertices, name);
+        Guard.ConvexPolygon(_vertices, Plane, name);
+    }
+
+    /// <summary>
+    /// A piece cut from a validated convex polygon by a plane (the BSP compiler): convex by construction,
+    /// so only the plane is computed; the shape checks, whose tolerances are meant for input, are skipped.
+    /// </summary>
+    internal Polygon(Vector3[] pieceVertices, PolygonSides sides, string name, bool cutFromValidPolygon)
+    {
+        System.Diagnostics.Debug.Assert(cutFromValidPolygon);
+        _vertices = pieceVertices;
         Sides = sides;
         Plane = MakePlane(_vertices, name);
     }

@@ -38,6 +38,25 @@ internal static class PolygonQuery
     }
 
     /// <summary>
+    /// The sphere centre moved along <paramref name="up"/> onto the polygon's plane, as retail's
+    /// check_walkable, check_small_walkable and find_crossed_edge project it (acclient.c:360226, :360311,
+    /// :360396): the distance over N·up is a double on the x87 stack; X moves by the double product, Y and Z
+    /// by products first stored as floats. False when the plane is parallel to <paramref name="up"/>
+    /// (|N·up| &lt; EPSILON).
+    /// </summary>
+    private static bool ProjectAlongUp(Polygon polygon, Vector3 center, Vector3 up, out Vector3 point)
+    {
+        var n = polygon.Plane.Normal;
+        double upDot = (double)n.Y * up.Y + (double)n.Z * up.Z + (double)up.X * n.X;
+        point = center;
+        if (Math.Abs(upDot) < Epsilon)
+            return false;
+        double along = ((double)n.Z * center.Z + (double)n.Y * center.Y + (double)center.X * n.X + polygon.Plane.D) / upDot;
+        point = new Vector3((float)(center.X - along * up.X), center.Y - (float)(along * up.Y), center.Z - (float)(along * up.Z));
+        return true;
+    }
+
+    /// <summary>
     /// The single-pass edge walk shared by retail polygon_hits_sphere, check_walkable and
     /// check_small_walkable: true when a disc of squared radius <paramref name="radiusSquared"/> around
     /// <paramref name="point"/> (a point in the polygon's plane) touches the polygon.
@@ -174,10 +193,8 @@ internal static class PolygonQuery
     /// </summary>
     public static bool CheckWalkable(Polygon polygon, in Sphere sphere, Vector3 up, bool small)
     {
-        float upDot = Vector3.Dot(polygon.Plane.Normal, up);
-        if (MathF.Abs(upDot) < Epsilon)
+        if (!ProjectAlongUp(polygon, sphere.Center, up, out var point))
             return false;
-        var point = sphere.Center - up * (PlaneDistance(polygon, sphere.Center) / upDot);
         float radiusSquared = sphere.Radius * sphere.Radius;
         if (small)
             radiusSquared *= 0.25f;
@@ -200,10 +217,8 @@ internal static class PolygonQuery
     {
         normal = Vector3.Zero;
         var planeNormal = polygon.Plane.Normal;
-        float upDot = Vector3.Dot(planeNormal, up);
-        if (MathF.Abs(upDot) < Epsilon)
+        if (!ProjectAlongUp(polygon, sphere.Center, up, out var point))
             return false;
-        var point = sphere.Center - up * (PlaneDistance(polygon, sphere.Center) / upDot);
         var vertices = polygon.Vertices;
         int previous = vertices.Length - 1;
         for (int i = 0; i < vertices.Length; i++)
@@ -213,7 +228,9 @@ internal static class PolygonQuery
             var inward = Vector3.Cross(planeNormal, vertices[i] - start);
             if (Vector3.Dot(point - start, inward) < 0f)
             {
-                normal = inward * (1f / inward.Length());
+                // Retail normalizes with the length and its reciprocal in double (acclient.c:360396).
+                double inverse = 1.0 / Math.Sqrt((double)inward.X * inward.X + (double)inward.Y * inward.Y + (double)inward.Z * inward.Z);
+                normal = new Vector3((float)(inverse * inward.X), (float)(inverse * inward.Y), (float)(inverse * inward.Z));
                 return true;
             }
         }
@@ -271,9 +288,15 @@ internal static class PolygonQuery
     /// </summary>
     public static bool AdjustSphereToPlane(Polygon polygon, ref Sphere validPos, Vector3 movement, ref float walkInterp)
     {
-        float distance = PlaneDistance(polygon, validPos.Center);
-        float approach = Vector3.Dot(movement, polygon.Plane.Normal);
-        float gap;
+        // Retail evaluates this on the x87 stack at double precision (acclient.c:359533): the distance, the
+        // approach, the back-off fraction and the new walk fraction stay double; X of the centre is moved by
+        // the double product, Y and Z by products first stored as floats; the walk fraction is stored as a
+        // float before its lower bound is tested.
+        var n = polygon.Plane.Normal;
+        var c = validPos.Center;
+        double distance = (double)n.Y * c.Y + (double)n.Z * c.Z + (double)c.X * n.X + polygon.Plane.D;
+        double approach = (double)n.Z * movement.Z + (double)n.Y * movement.Y + (double)n.X * movement.X;
+        double gap;
         if (approach <= Epsilon)
         {
             if (approach >= -Epsilon)
@@ -284,11 +307,12 @@ internal static class PolygonQuery
         {
             gap = -validPos.Radius - distance;
         }
-        float backOff = gap / approach;
-        float interp = (1f - backOff) * walkInterp;
-        if (interp >= walkInterp || interp < -0.5f)
+        double backOff = gap / approach;
+        double interpWide = (1.0 - backOff) * walkInterp;
+        float interp = (float)interpWide;
+        if (interpWide >= walkInterp || interp < -0.5f)
             return false;
-        validPos.Center -= movement * backOff;
+        validPos.Center = new Vector3((float)(c.X - backOff * movement.X), c.Y - (float)(backOff * movement.Y), c.Z - (float)(backOff * movement.Z));
         walkInterp = interp;
         return true;
     }

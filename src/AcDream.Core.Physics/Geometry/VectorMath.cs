@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 
 namespace AcDream.Core.Physics.Geometry;
@@ -11,10 +12,13 @@ internal static class VectorMath
     /// </summary>
     public static bool NormalizeCheckSmall(ref Vector3 v)
     {
-        float length = v.Length();
+        // Retail (AC1Legacy::Vector3::normalize_check_small, acclient.c:143621) takes the length and its
+        // reciprocal on the x87 stack at double precision and rounds each scaled component once.
+        double length = Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
         if (length < PhysicsConstants.Epsilon)
             return true;
-        v /= length;
+        double inverse = 1.0 / length;
+        v = new Vector3((float)(inverse * v.X), (float)(inverse * v.Y), (float)(inverse * v.Z));
         return false;
     }
 

@@ -62,7 +62,10 @@ internal static class ShapeSweep
                 continue;
             for (int k = 0; k < node.PolygonCount; k++)
             {
-                if (!ReferenceToi.Polygon(lc, ld, lr, polygons[indices[node.FirstPolygon + k]], out var hit))
+                var polygon = polygons[indices[node.FirstPolygon + k]];
+                if (!MayReach(polygon, lc, end, lr))
+                    continue;
+                if (!ReferenceToi.Polygon(lc, ld, lr, polygon, out var hit))
                     continue;
                 var normal = frame.LocalToGlobalVec(hit.Normal);
                 if (walkableOnly && !(normal.Z >= PhysicsConstants.FloorZ))
@@ -80,7 +83,8 @@ internal static class ShapeSweep
     /// <summary>Sweeps against one landblock-space polygon shifted by <paramref name="blockShift"/> (terrain).</summary>
     public static bool Polygon(Polygon polygon, Vector3 blockShift, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
     {
-        if (!ReferenceToi.Polygon(c - blockShift, d, r, polygon, out var hit))
+        var local = c - blockShift;
+        if (!MayReach(polygon, local, local + d * best.Fraction, r) || !ReferenceToi.Polygon(local, d, r, polygon, out var hit))
             return false;
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
@@ -109,6 +113,22 @@ internal static class ShapeSweep
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
         return best.Offer(hit.Time, hit.Normal);
+    }
+
+    /// <summary>
+    /// A cheap test before the exact one: false when the swept sphere stays clear of the polygon's plane
+    /// (wholly in front of it, or wholly behind it), or starts behind a single-sided face — the cases in
+    /// which <see cref="ReferenceToi.Polygon"/> finds nothing.
+    /// </summary>
+    private static bool MayReach(Polygon polygon, Vector3 a, Vector3 b, float r)
+    {
+        var plane = polygon.Plane;
+        float s0 = Vector3.Dot(plane.Normal, a) + plane.D;
+        float s1 = Vector3.Dot(plane.Normal, b) + plane.D;
+        if (s0 < 0f && polygon.Sides == PolygonSides.Single)
+            return false;
+        float reach = r + ReferenceToi.ContactSlop;
+        return !(s0 > reach && s1 > reach) && !(s0 < -reach && s1 < -reach);
     }
 
     /// <summary>True when a sphere of radius <paramref name="r"/> moving from <paramref name="a"/> to <paramref name="b"/> can touch <paramref name="bounds"/>.</summary>

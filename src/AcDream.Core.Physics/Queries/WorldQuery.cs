@@ -136,20 +136,23 @@ public sealed class WorldQuery
     /// <see cref="ViewerRadius"/>, <see cref="ViewerFlags"/>, sub-steps of one radius with a shorter last
     /// one — from <paramref name="pivot"/> towards <paramref name="desired"/> (same frame), stopping just
     /// short of the first thing in the way (terrain by the viewer's arm of validate_walkable, walls, objects;
-    /// creatures are ignored). An indoor pivot starts in the cell that holds it. When the sweep fails the
-    /// camera goes to the desired point if a cell holds it, else to the pivot, as retail does.
+    /// creatures are ignored). The sweep starts in the cell that holds the pivot. When the sweep fails the
+    /// camera goes to the desired point if a cell holds it, else to the pivot, as retail does (also when
+    /// no loaded cell holds the pivot).
     /// </summary>
     /// <param name="pivot">Where the arm starts (the player's head, say).</param>
     /// <param name="desired">Where the camera wants to be.</param>
-    /// <param name="playerId">The player's object id: the camera passes through the player.</param>
+    /// <param name="playerId">The player's object id: the camera passes through the player (a new id builds the viewer's description once; the same id allocates nothing).</param>
     public CameraArmResult CameraArm(in Position pivot, Vector3 desired, uint playerId = 0)
     {
         CheckPosition(pivot, "pivot.origin", "pivot.cell");
         Guard.Rotation(pivot.Frame.Orientation, "pivot.orientation");
         Guard.Finite(desired, "desired");
-        var start = pivot;
-        if (!LandDefs.IsLandCell(pivot.CellId) && FindCell(pivot, out var holder))
-            start = holder;
+        // Retail starts an indoor pivot in the cell that holds it (CPhysicsObj::AdjustPosition) and an outdoor
+        // one in the player's cell; here the pivot's cell id only names its frame, so both start in the cell
+        // holding the pivot (outdoors the same cell unless the pivot lies across a cell border).
+        if (!FindCell(pivot, out var start))
+            return new CameraArmResult(pivot, CameraPlacement.AtPivot, false, Vector3.Zero);
         var target = new Position(start.CellId, new Frame(desired - LandDefs.BlockOffset(pivot.CellId, start.CellId), start.Frame.Orientation));
         if (_viewerMover is null || _viewerMover.ObjectId != playerId)
             _viewerMover = new MoverDescription(playerId, [new Sphere(Vector3.Zero, ViewerRadius)], 0f, 0f, PhysicsState.None, ViewerFlags);
@@ -234,17 +237,15 @@ public sealed class WorldQuery
             }
             if ((layers & (QueryLayers.Objects | QueryLayers.EtherealObjects)) == 0)
                 continue;
-            var rows = World.Objects.RowsInCell(cell.Id);
-            for (int start = 0; start < rows.Length;)
+            var objects = World.Objects.ObjectsInCell(cell.Id);
+            for (int o = 0; o < objects.Count; o++)
             {
-                int end = ObjectEnd(rows, start);
-                if (Selected(rows[start], layers, ignoreId, out var rung))
-                {
-                    for (int i = start; i < end; i++)
-                        if (rows[i].Kind == rung && SweepRow(rows[i], frameCell, c, d, r, walkableOnly, ref best))
-                            (kind, cellId, objectId) = (SurfaceKind.Object, rows[i].Position.CellId, rows[i].EntityId);
-                }
-                start = end;
+                var rows = objects.RowsOf(o);
+                if (rows.Length == 0 || !Selected(rows[0], layers, ignoreId, out var rung))
+                    continue;
+                for (int i = 0; i < rows.Length; i++)
+                    if (rows[i].Kind == rung && SweepRow(rows[i], frameCell, c, d, r, walkableOnly, ref best))
+                        (kind, cellId, objectId) = (SurfaceKind.Object, rows[i].Position.CellId, rows[i].EntityId);
             }
         }
         if (!best.Found)
@@ -307,23 +308,23 @@ public sealed class WorldQuery
         int count = 0;
         foreach (var cell in _cells)
         {
-            var rows = World.Objects.RowsInCell(cell.Id);
-            for (int start = 0; start < rows.Length && count < results.Length;)
+            var objects = World.Objects.ObjectsInCell(cell.Id);
+            for (int o = 0; o < objects.Count && count < results.Length; o++)
             {
-                int end = ObjectEnd(rows, start);
-                uint id = rows[start].EntityId;
-                if (Selected(rows[start], layers, ignoreId, out var rung) && !Listed(results[..count], id))
+                var rows = objects.RowsOf(o);
+                if (rows.Length == 0)
+                    continue;
+                uint id = rows[0].EntityId;
+                if (!Selected(rows[0], layers, ignoreId, out var rung) || Listed(results[..count], id))
+                    continue;
+                for (int i = 0; i < rows.Length; i++)
                 {
-                    for (int i = start; i < end; i++)
-                    {
-                        ref readonly var row = ref rows[i];
-                        if (row.Kind != rung || !Overlaps(row, frameCell, c, extent, isBox))
-                            continue;
-                        results[count++] = new ObjectOverlap(id, row.Kind, row.Shape.Index, row.Position.CellId, row.State);
-                        break;
-                    }
+                    ref readonly var row = ref rows[i];
+                    if (row.Kind != rung || !Overlaps(row, frameCell, c, extent, isBox))
+                        continue;
+                    results[count++] = new ObjectOverlap(id, row.Kind, row.Shape.Index, row.Position.CellId, row.State);
+                    break;
                 }
-                start = end;
             }
         }
         return count;
@@ -376,15 +377,6 @@ public sealed class WorldQuery
             if (o.ObjectId == id)
                 return true;
         return false;
-    }
-
-    /// <summary>The end (exclusive) of the object whose rows start at <paramref name="start"/>: rows of one object are contiguous.</summary>
-    private static int ObjectEnd(ReadOnlySpan<ShadowEntry> rows, int start)
-    {
-        int end = start + 1;
-        while (end < rows.Length && rows[end].EntityId == rows[start].EntityId)
-            end++;
-        return end;
     }
 
     /// <summary>Whether the layers take this object, and which kind of its shapes it collides by (retail's dispatch rung).</summary>

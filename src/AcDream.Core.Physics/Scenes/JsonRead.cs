@@ -135,6 +135,16 @@ internal static class JsonRead
         return f;
     }
 
+    /// <summary>A finite number read as a double (times in seconds).</summary>
+    public static double Double(JsonElement e, string path)
+    {
+        if (e.ValueKind != JsonValueKind.Number)
+            throw new SceneFormatException(path, $"expected a number, got {Kind(e)}.");
+        if (!e.TryGetDouble(out double d) || !double.IsFinite(d))
+            throw new SceneFormatException(path, $"the number {e.GetRawText()} is out of range.");
+        return d;
+    }
+
     public static int Int(JsonElement e, string path)
     {
         if (e.ValueKind != JsonValueKind.Number || !e.TryGetInt32(out int v))

@@ -31,18 +31,60 @@ public sealed class Scene
     public IReadOnlyList<SceneMover> Movers { get; }
 }
 
-/// <summary>A mover of a scene: what it is, where it starts, and its requested offset for every frame.</summary>
+/// <summary>
+/// A mover of a scene: what it is, where it starts, and for every frame either its requested offset (moved by
+/// <see cref="PhysicsEngine.Resolve"/>) or, for a body mover, its elapsed time, desired motion and jump (moved
+/// by <see cref="PhysicsEngine.Step"/>).
+/// </summary>
 public sealed class SceneMover
 {
     private readonly Vector3[] _motion;
+    private readonly SceneStep[] _steps;
 
     internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion)
+        : this(name, description, start, motion, [], default) { }
+
+    private readonly int[] _frameItemStarts = [0];
+
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody)
     {
         Name = name;
         Description = description;
         Start = start;
         _motion = motion;
+        _steps = steps;
+        StartBody = startBody;
     }
+
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody,
+        string path, int[] frameItemStarts)
+        : this(name, description, start, motion, steps, startBody)
+    {
+        Path = path;
+        _frameItemStarts = frameItemStarts;
+    }
+
+    /// <summary>The mover's JSON path in its scene file (e.g. <c>movers[3]</c>), for error messages.</summary>
+    internal string Path { get; } = "movers[0]";
+
+    /// <summary>
+    /// The JSON path of the "motion" (or, for a body, "steps") item that produced frame
+    /// <paramref name="frame"/>, repeats counted.
+    /// </summary>
+    internal string FramePath(int frame)
+    {
+        int item = Array.BinarySearch(_frameItemStarts, frame);
+        if (item < 0)
+            item = ~item - 1;
+        return $"{Path}.{(IsBody ? "steps" : "motion")}[{item}]";
+    }
+
+    /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step"/>.</summary>
+    public bool IsBody => _steps.Length > 0;
+    /// <summary>A body mover's state before the first frame (velocity, friction, elasticity…).</summary>
+    public Body.BodyState StartBody { get; }
+    /// <summary>A body mover's frames, repeats expanded; empty for an offset mover.</summary>
+    public ReadOnlySpan<SceneStep> Steps => _steps;
 
     /// <summary>The mover's name, unique in its scene.</summary>
     public string Name { get; }
@@ -50,8 +92,8 @@ public sealed class SceneMover
     public MoverDescription Description { get; }
     /// <summary>Its state before the first frame.</summary>
     public MoverState Start { get; }
-    /// <summary>The requested offset of each frame (landblock space), repeats expanded.</summary>
+    /// <summary>The requested offset of each frame (landblock space), repeats expanded; empty for a body mover.</summary>
     public ReadOnlySpan<Vector3> Motion => _motion;
     /// <summary>How many frames the mover walks.</summary>
-    public int FrameCount => _motion.Length;
+    public int FrameCount => IsBody ? _steps.Length : _motion.Length;
 }

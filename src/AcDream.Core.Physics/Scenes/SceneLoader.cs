@@ -5,6 +5,7 @@ using System.Numerics;
 using System.Security.Cryptography;
 using System.Text;
 using System.Text.Json;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
@@ -96,11 +97,15 @@ public static class SceneLoader
                 ReadObject(value, path);
             var movers = new List<SceneMover>();
             var names = new HashSet<string>(StringComparer.Ordinal);
+            long totalFrames = 0;
             foreach (var (value, path) in o.Array("movers"))
             {
                 var mover = ReadMover(value, path);
                 if (!names.Add(mover.Name))
                     throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
+                totalFrames += mover.FrameCount;
+                if (totalFrames > InputLimits.MaxSceneFrames)
+                    throw new SceneFormatException(path + (mover.IsBody ? ".steps" : ".motion"), $"the scene's movers walk more than {InputLimits.MaxSceneFrames} frames in all (InputLimits.MaxSceneFrames, movers × frames).");
                 movers.Add(mover);
             }
             if (movers.Count == 0)
@@ -466,23 +471,135 @@ public static class SceneLoader
                 throw new SceneFormatException(o.Child("objectInfo"), "Contact and OnWalkable are per-frame state; use \"floorZ\" or \"airborne\".");
             float scale = o.Float("scale", 1f);
             Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
-            var position = ReadPlacement(o);
-            if (o.Has("floorZ") == o.Bool("airborne", false))
-                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height) or \"airborne\": true.");
-            var start = o.Opt("floorZ") is { } fz
-                ? MoverState.OnFloor(position, JsonRead.Float(fz, o.Child("floorZ")))
-                : MoverState.Airborne(position);
-            var motion = ReadMotion(o.Req("motion"), o.Child("motion"));
+            var start = ReadStart(o, path);
+            if (o.Has("motion") == o.Has("steps"))
+                throw new SceneFormatException(path, "a mover needs exactly one of \"motion\" (per-frame offsets) or \"steps\" (a body moved by time, velocity and jumps).");
+            if (o.Has("body") && !o.Has("steps"))
+                throw new SceneFormatException(o.Child("body"), "only a mover with \"steps\" has a body.");
+            Vector3[] motion = [];
+            SceneStep[] steps = [];
+            var body = BodyState.Creature();
+            var itemStarts = new List<int>();
+            if (o.Opt("steps") is { } st2)
+            {
+                steps = ReadSteps(st2, o.Child("steps"), itemStarts);
+                if (o.Opt("body") is { } b)
+                    body = ReadBody(b, o.Child("body"));
+            }
+            else
+            {
+                motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
+            }
             o.End();
             var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
-            return new SceneMover(name, description, start, motion);
+            return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts]);
         }
 
-        private static Vector3[] ReadMotion(JsonElement e, string path)
+        /// <summary>
+        /// The mover's state before its first frame: exactly one of "floorZ" (standing on a horizontal floor),
+        /// "airborne": true (no contact), or "start" (a full recorded state: placement, contact and walkable
+        /// flags, a contact plane of any slope with its cell, a carried sliding normal; StartStateReader).
+        /// </summary>
+        private MoverState ReadStart(JsonObj o, string path)
+        {
+            bool floor = o.Has("floorZ"), airborne = o.Bool("airborne", false), full = o.Has("start");
+            if ((floor ? 1 : 0) + (airborne ? 1 : 0) + (full ? 1 : 0) != 1)
+                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height), \"airborne\": true, or \"start\" (a full start state).");
+            if (full)
+            {
+                foreach (string placement in new[] { "position", "cell", "rotation" })
+                    if (o.Has(placement))
+                        throw new SceneFormatException(o.Child(placement), "a mover with \"start\" gives its placement inside \"start\".");
+                return StartStateReader.Read(o.Req("start"), o.Child("start"), _world);
+            }
+            var position = ReadPlacement(o);
+            return floor
+                ? MoverState.OnFloor(position, JsonRead.Float(o.Req("floorZ"), o.Child("floorZ")))
+                : MoverState.Airborne(position);
+        }
+
+        /// <summary>A body's start: velocity, omega, friction, elasticity (retail defaults) and whether it has a motion interpreter (default true).</summary>
+        private static BodyState ReadBody(JsonElement e, string path)
+        {
+            var o = new JsonObj(e, path);
+            var body = BodyState.Creature();
+            body.Velocity = o.Opt("velocity") is { } v ? Speed(v, o.Child("velocity")) : Vector3.Zero;
+            body.Omega = o.Opt("omega") is { } w ? Speed(w, o.Child("omega")) : Vector3.Zero;
+            body.Friction = Fraction(o, "friction", PhysicsConstants.DefaultFriction);
+            body.Elasticity = Fraction(o, "elasticity", PhysicsConstants.DefaultElasticity);
+            body.MotionInterpreter = o.Bool("motionInterpreter", true);
+            o.End();
+            return body;
+        }
+
+        private static Vector3 Speed(JsonElement e, string path)
+        {
+            var v = JsonRead.Vec3(e, path);
+            float max = BodyGuard.MaxSpeed;
+            if (!(MathF.Abs(v.X) <= max && MathF.Abs(v.Y) <= max && MathF.Abs(v.Z) <= max))
+                throw new SceneFormatException(path, $"must be within ±{max} per second on each axis, got {v}.");
+            return v;
+        }
+
+        private static float Fraction(JsonObj o, string name, float fallback)
+        {
+            float f = o.Float(name, fallback);
+            if (!(f >= 0f && f <= 1f))
+                throw new SceneFormatException(o.Child(name), $"must be a number from 0 to 1, got {f}.");
+            return f;
+        }
+
+        /// <summary>
+        /// A body mover's frames: each <c>{ "dt": seconds | "hz": frames per second, "velocity": [..], "jump": m/s, "count": n }</c>
+        /// (velocity and jump default to zero, count to 1).
+        /// </summary>
+        private static SceneStep[] ReadSteps(JsonElement e, string path, List<int> itemStarts)
+        {
+            var frames = new List<SceneStep>();
+            foreach (var (value, p) in JsonRead.Array(e, path))
+            {
+                itemStarts.Add(frames.Count);
+                var o = new JsonObj(value, p);
+                if (o.Has("dt") == o.Has("hz"))
+                    throw new SceneFormatException(p, "a step needs exactly one of \"dt\" (seconds) or \"hz\" (frames per second).");
+                double dt;
+                if (o.Opt("dt") is { } d)
+                {
+                    dt = JsonRead.Double(d, o.Child("dt"));
+                    if (!(dt >= 0))
+                        throw new SceneFormatException(o.Child("dt"), $"must be zero or more seconds, got {dt}.");
+                }
+                else
+                {
+                    double hz = JsonRead.Double(o.Req("hz"), o.Child("hz"));
+                    if (!(hz > 0))
+                        throw new SceneFormatException(o.Child("hz"), $"must be more than zero frames per second, got {hz}.");
+                    dt = 1.0 / hz;
+                }
+                var velocity = o.Opt("velocity") is { } v ? Speed(v, o.Child("velocity")) : Vector3.Zero;
+                float jump = o.Float("jump", 0f);
+                if (!(jump >= 0f && jump <= BodyGuard.MaxSpeed))
+                    throw new SceneFormatException(o.Child("jump"), $"must be a vertical speed of zero or more m/s, got {jump}.");
+                int count = o.Int("count", 1);
+                o.End();
+                if (count < 1)
+                    throw new SceneFormatException(o.Child("count"), $"must be 1 or more, got {count}.");
+                if ((long)frames.Count + count > MaxFramesPerMover)
+                    throw new SceneFormatException(o.Child("count"), $"a mover may walk at most {MaxFramesPerMover} frames.");
+                for (int i = 0; i < count; i++)
+                    frames.Add(new SceneStep(dt, velocity, jump));
+            }
+            if (frames.Count == 0)
+                throw new SceneFormatException(path, "a mover needs at least one step.");
+            return [.. frames];
+        }
+
+        private static Vector3[] ReadMotion(JsonElement e, string path, List<int> itemStarts)
         {
             var frames = new List<Vector3>();
             foreach (var (value, p) in JsonRead.Array(e, path))
             {
+                itemStarts.Add(frames.Count);
                 if (value.ValueKind == JsonValueKind.Array)
                 {
                     frames.Add(JsonRead.Vec3(value, p));

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Reflection;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Diagnostics;
 
 namespace AcDream.Core.Physics.Scenes;
@@ -15,7 +16,8 @@ public readonly record struct FrameDiagnostics(int MoverIndex, string MoverName,
 /// <summary>
 /// Runs a scene: every mover, alone, frame by frame through one <see cref="PhysicsEngine"/>, each frame
 /// requesting the mover's current position plus that frame's offset (same cell label and orientation),
-/// as a client's per-frame motion would.
+/// as a client's per-frame motion would; a body mover's frames go through <see cref="PhysicsEngine.Step"/>
+/// with its elapsed time, desired motion and jump.
 /// </summary>
 public static class SceneRunner
 {
@@ -39,13 +41,41 @@ public static class SceneRunner
             var mover = scene.Movers[m];
             var frames = new List<TrajectoryFrame>(mover.FrameCount);
             var state = mover.Start;
+            var body = mover.StartBody;
             for (int f = 0; f < mover.FrameCount; f++)
             {
-                var target = state.Position;
-                target.Frame.Origin += mover.Motion[f];
-                var result = engine.Resolve(mover.Description, state, target);
-                frames.Add(TrajectoryFrame.From(target, result));
-                state = result.Next;
+                if (mover.IsBody)
+                {
+                    var step = mover.Steps[f];
+                    BodyStepResult stepped;
+                    try
+                    {
+                        stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                    }
+                    catch (ArgumentException ex)
+                    {
+                        throw Refused(mover, f, ex);
+                    }
+                    frames.Add(TrajectoryFrame.From(step, stepped));
+                    state = stepped.Next;
+                    body = stepped.Body;
+                }
+                else
+                {
+                    var target = state.Position;
+                    target.Frame.Origin += mover.Motion[f];
+                    MoveResult result;
+                    try
+                    {
+                        result = engine.Resolve(mover.Description, state, target);
+                    }
+                    catch (ArgumentException ex)
+                    {
+                        throw Refused(mover, f, ex);
+                    }
+                    frames.Add(TrajectoryFrame.From(target, result));
+                    state = result.Next;
+                }
                 if (log is not null)
                 {
                     diagnostics!(new FrameDiagnostics(m, mover.Name, f, log.Events));
@@ -55,5 +85,18 @@ public static class SceneRunner
             movers.Add(new MoverTrajectory(mover.Name, frames));
         }
         return new Trajectory(scene.Name, scene.Sha256, LibraryVersion, movers);
+    }
+
+    /// <summary>
+    /// Input the engine refused while a scene ran, as a <see cref="SceneFormatException"/> naming the JSON
+    /// path it came from: the mover (its start state, on the first frame) or the motion or step item of that
+    /// frame, and the mover and frame.
+    /// </summary>
+    private static SceneFormatException Refused(SceneMover mover, int frame, ArgumentException ex)
+    {
+        bool startState = frame == 0 && (ex.Message.StartsWith("state.", StringComparison.Ordinal) || ex.Message.StartsWith("body.", StringComparison.Ordinal));
+        string path = startState ? mover.Path : mover.FramePath(frame);
+        var wrapped = SceneFormatException.Wrap(path, ex);
+        return new SceneFormatException(path, $"mover \"{mover.Name}\", frame {frame}: {wrapped.Detail}", ex);
     }
 }

@@ -8,11 +8,20 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 
-/// <summary>One frame of one mover: the requested target (the input) and everything the engine resolved (the outputs).</summary>
+/// <summary>
+/// One frame of one mover: the input (the requested target, or for a body mover the <see cref="SceneStep"/>)
+/// and everything the engine resolved (the outputs).
+/// </summary>
 public sealed class TrajectoryFrame
 {
-    /// <summary>The requested target position (input).</summary>
+    /// <summary>The requested target position (input of an offset mover's frame; default for a body frame).</summary>
     public Position Target { get; init; }
+    /// <summary>A body frame's input (elapsed time, desired motion, jump); null for an offset mover's frame.</summary>
+    public SceneStep? Step { get; init; }
+    /// <summary>A body frame's velocity after the step (output).</summary>
+    public Vector3 Velocity { get; init; }
+    /// <summary>How many quanta a body frame stepped (output).</summary>
+    public int Quanta { get; init; }
     /// <summary>The resolved origin, landblock-local.</summary>
     public Vector3 Position { get; init; }
     /// <summary>The resolved cell id.</summary>
@@ -39,6 +48,31 @@ public sealed class TrajectoryFrame
     public IReadOnlyList<uint> CollidedObjects { get; init; } = Array.Empty<uint>();
     /// <summary>The move was accepted.</summary>
     public bool Succeeded { get; init; }
+
+    /// <summary>Builds a body frame from its input and the engine's result (copies the collided ids).</summary>
+    public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result)
+    {
+        var frame = From(default, result.Move);
+        return new TrajectoryFrame
+        {
+            Step = step,
+            Velocity = result.Body.Velocity,
+            Quanta = result.Quanta,
+            Position = frame.Position,
+            Cell = frame.Cell,
+            Contact = frame.Contact,
+            OnWalkable = frame.OnWalkable,
+            ContactPlaneValid = frame.ContactPlaneValid,
+            ContactPlane = frame.ContactPlane,
+            ContactPlaneCell = frame.ContactPlaneCell,
+            CollisionNormalValid = frame.CollisionNormalValid,
+            CollisionNormal = frame.CollisionNormal,
+            SlidingNormalValid = frame.SlidingNormalValid,
+            SlidingNormal = frame.SlidingNormal,
+            CollidedObjects = frame.CollidedObjects,
+            Succeeded = frame.Succeeded,
+        };
+    }
 
     /// <summary>Builds a frame from a target and the engine's result (copies the collided ids).</summary>
     public static TrajectoryFrame From(Position target, in MoveResult result)
@@ -152,14 +186,25 @@ public sealed class Trajectory
         using (var w = new Utf8JsonWriter(buffer))
         {
             w.WriteStartObject();
-            w.WriteStartObject("target");
-            w.WriteString("cell", Hex(f.Target.CellId));
-            WriteVec(w, "origin", f.Target.Frame.Origin);
-            var q = f.Target.Frame.Orientation;
-            w.WriteStartArray("rotation");
-            w.WriteNumberValue(q.W); w.WriteNumberValue(q.X); w.WriteNumberValue(q.Y); w.WriteNumberValue(q.Z);
-            w.WriteEndArray();
-            w.WriteEndObject();
+            if (f.Step is { } step)
+            {
+                w.WriteStartObject("step");
+                w.WriteNumber("dt", step.Elapsed);
+                WriteVec(w, "velocity", step.DesiredVelocity);
+                w.WriteNumber("jump", step.JumpVelocity);
+                w.WriteEndObject();
+            }
+            else
+            {
+                w.WriteStartObject("target");
+                w.WriteString("cell", Hex(f.Target.CellId));
+                WriteVec(w, "origin", f.Target.Frame.Origin);
+                var q = f.Target.Frame.Orientation;
+                w.WriteStartArray("rotation");
+                w.WriteNumberValue(q.W); w.WriteNumberValue(q.X); w.WriteNumberValue(q.Y); w.WriteNumberValue(q.Z);
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }
             WriteVec(w, "position", f.Position);
             w.WriteString("cell", Hex(f.Cell));
             w.WriteBoolean("contact", f.Contact);
@@ -176,6 +221,13 @@ public sealed class Trajectory
             foreach (uint id in f.CollidedObjects) w.WriteStringValue(Hex(id));
             w.WriteEndArray();
             w.WriteBoolean("succeeded", f.Succeeded);
+            if (f.Step is not null)
+            {
+                w.WriteStartObject("body");
+                WriteVec(w, "velocity", f.Velocity);
+                w.WriteNumber("quanta", f.Quanta);
+                w.WriteEndObject();
+            }
             w.WriteEndObject();
         }
         return Encoding.UTF8.GetString(buffer.ToArray());
@@ -236,9 +288,31 @@ public sealed class Trajectory
     private static TrajectoryFrame ReadFrame(JsonElement e, string path)
     {
         var o = new JsonObj(e, path);
-        var t = o.Obj("target");
-        var target = new Position(t.Id("cell"), new Frame(t.Vec3("origin"), JsonRead.RawQuaternion(t.Req("rotation"), t.Child("rotation"))));
-        t.End();
+        if (o.Has("step") == o.Has("target"))
+            throw new SceneFormatException(path, "a frame needs exactly one of \"target\" (an offset mover) or \"step\" (a body mover).");
+        Position target = default;
+        SceneStep? step = null;
+        if (o.Opt("target") is { } te)
+        {
+            var t = new JsonObj(te, o.Child("target"));
+            target = new Position(t.Id("cell"), new Frame(t.Vec3("origin"), JsonRead.RawQuaternion(t.Req("rotation"), t.Child("rotation"))));
+            t.End();
+        }
+        else
+        {
+            var so = o.Obj("step");
+            step = new SceneStep(JsonRead.Double(so.Req("dt"), so.Child("dt")), so.Vec3("velocity"), so.Float("jump"));
+            so.End();
+        }
+        Vector3 velocity = default;
+        int quanta = 0;
+        if (step is not null)
+        {
+            var bo = o.Obj("body");
+            velocity = bo.Vec3("velocity");
+            quanta = JsonRead.Int(bo.Req("quanta"), bo.Child("quanta"));
+            bo.End();
+        }
         var cp = o.Obj("contactPlane");
         bool cpValid = JsonRead.Bool(cp.Req("valid"), cp.Child("valid"));
         var plane = new Plane(cp.Vec3("normal"), cp.Float("d"));
@@ -252,6 +326,9 @@ public sealed class Trajectory
         var frame = new TrajectoryFrame
         {
             Target = target,
+            Step = step,
+            Velocity = velocity,
+            Quanta = quanta,
             Position = o.Vec3("position"),
             Cell = o.Id("cell"),
             Contact = JsonRead.Bool(o.Req("contact"), o.Child("contact")),

@@ -104,19 +104,35 @@ public static class TrajectoryReplay
             if (recorded.Frames.Count != mover.FrameCount)
                 return Fail(new ReplayDifference(mover.Name, -1, "frames.count", Str(recorded.Frames.Count), Str(mover.FrameCount)), compared, tolerance, notes);
             var state = mover.Start;
+            var body = mover.StartBody;
             for (int f = 0; f < recorded.Frames.Count; f++)
             {
                 var expected = recorded.Frames[f];
-                MoveResult result;
+                if (mover.IsBody != expected.Step.HasValue)
+                    return Fail(new ReplayDifference(mover.Name, f, "step", mover.IsBody ? "a body step" : "a target",
+                        expected.Step.HasValue ? "a body step" : "a target"), compared, tolerance, notes);
+                TrajectoryFrame actual;
+                MoverState next;
                 try
                 {
-                    result = engine.Resolve(mover.Description, state, expected.Target);
+                    if (expected.Step is { } step)
+                    {
+                        var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                        actual = TrajectoryFrame.From(step, stepped);
+                        next = stepped.Next;
+                        body = stepped.Body;
+                    }
+                    else
+                    {
+                        var result = engine.Resolve(mover.Description, state, expected.Target);
+                        actual = TrajectoryFrame.From(expected.Target, result);
+                        next = result.Next;
+                    }
                 }
                 catch (ArgumentException ex)
                 {
-                    return Fail(new ReplayDifference(mover.Name, f, "target", "a valid target", ex.Message), compared, tolerance, notes);
+                    return Fail(new ReplayDifference(mover.Name, f, expected.Step.HasValue ? "step" : "target", "a valid input", ex.Message), compared, tolerance, notes);
                 }
-                var actual = TrajectoryFrame.From(expected.Target, result);
                 if (log is not null)
                 {
                     diagnostics!(new FrameDiagnostics(m, mover.Name, f, log.Events));
@@ -126,7 +142,7 @@ public static class TrajectoryReplay
                 if (difference is not null)
                     return Fail(difference, compared, tolerance, notes);
                 compared++;
-                state = result.Next;
+                state = next;
             }
         }
         return new ReplayResult(null, compared, tolerance, notes);
@@ -165,7 +181,10 @@ public static class TrajectoryReplay
             ?? (expected.SlidingNormalValid != actual.SlidingNormalValid ? D("slidingNormal.valid", Str(expected.SlidingNormalValid), Str(actual.SlidingNormalValid)) : null)
             ?? Vec("slidingNormal.vector", expected.SlidingNormal, actual.SlidingNormal)
             ?? (!SameIds(expected.CollidedObjects, actual.CollidedObjects) ? D("collided", Ids(expected.CollidedObjects), Ids(actual.CollidedObjects)) : null)
-            ?? (expected.Succeeded != actual.Succeeded ? D("succeeded", Str(expected.Succeeded), Str(actual.Succeeded)) : null);
+            ?? (expected.Succeeded != actual.Succeeded ? D("succeeded", Str(expected.Succeeded), Str(actual.Succeeded)) : null)
+            ?? (expected.Step is null ? null
+                : Vec("body.velocity", expected.Velocity, actual.Velocity)
+                ?? (expected.Quanta != actual.Quanta ? D("body.quanta", Str(expected.Quanta), Str(actual.Quanta)) : null));
     }
 
     private static bool SameIds(IReadOnlyList<uint> a, IReadOnlyList<uint> b)

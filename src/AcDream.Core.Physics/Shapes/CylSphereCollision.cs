@@ -221,7 +221,7 @@ internal static class CylSphereCollision
         CollisionNormal(cylinder, path, checkSphere, disp, radsum, 0, out Vector3 normal);
         if (VectorMath.NormalizeCheckSmall(ref normal))
             return TransitionState.Collided;
-        Vector3 stepNormal = path.LocalSpacePos.Frame.LocalToGlobalVec(normal);
+        Vector3 stepNormal = path.LocalSpacePos.LocalToGlobalVec(normal);
         return transition.StepUp(stepNormal) ? TransitionState.OK : transition.StepUpSlide();
     }
 
@@ -242,19 +242,22 @@ internal static class CylSphereCollision
         if (!hits)
             return TransitionState.OK;
 
-        float stepDown = path.StepDownAmt * path.WalkInterp;
-        if (MathF.Abs(stepDown) < PhysicsConstants.Epsilon)
+        // Retail keeps these on the x87 stack at double precision and rounds only its float stores
+        // (CCylSphere::step_sphere_down, acclient.c:361573; see SphereCollision.StepSphereDown).
+        double stepDown = (double)path.StepDownAmt * path.WalkInterp;
+        if (Math.Abs(stepDown) < PhysicsConstants.Epsilon)
             return TransitionState.Collided;
 
         // How far sphere 0 must rise for its bottom to sit on the top cap.
-        float lift = cylinder.Height + checkSphere.Radius - disp.Z;
-        float walkInterp = (1.0f - lift / stepDown) * path.WalkInterp;
+        double liftWide = (double)cylinder.Height + checkSphere.Radius - disp.Z;
+        double walkInterp = (1.0 - liftWide / stepDown) * path.WalkInterp;
         if (walkInterp >= path.WalkInterp || walkInterp < -0.1f)
             return TransitionState.Collided;
 
-        Vector3 contact = new(checkSphere.Center.X, checkSphere.Center.Y, checkSphere.Center.Z + (lift - checkSphere.Radius));
+        float lift = (float)liftWide;
+        Vector3 contact = new(checkSphere.Center.X, checkSphere.Center.Y, (float)((double)lift - checkSphere.Radius + checkSphere.Center.Z));
         SphereCollision.SetRetailContactPlane(transition, Vector3.UnitZ, contact);
-        path.WalkInterp = walkInterp;
+        path.WalkInterp = (float)walkInterp;
         path.AddOffsetToCheckPos(new Vector3(0f, 0f, lift));
         return TransitionState.Adjusted;
     }

@@ -11,13 +11,17 @@ namespace AcDream.Core.Physics.Shapes;
 /// </summary>
 public sealed class PhysicsModel
 {
-    /// <summary>Creates a model; the bounding sphere defaults to the tree's root bounds.</summary>
+    /// <summary>
+    /// Creates a model; the bounding sphere defaults to the tree's root bounds. Its radius must be greater
+    /// than zero and at most <see cref="InputLimits.MaxExtent"/> (as the scene loader requires).
+    /// </summary>
     public PhysicsModel(BspTree bsp, Sphere? boundingSphere = null, string name = "model")
     {
         Bsp = bsp ?? throw new ArgumentNullException(nameof(bsp), $"{name}.bsp: is required.");
         var bounds = boundingSphere ?? bsp.Bounds;
         Guard.Finite(bounds.Center, $"{name}.boundingSphere.center");
-        Guard.Extent(bounds.Radius, true, $"{name}.boundingSphere.radius");
+        // A radius of zero is refused as the scene loader refuses it: such a model could never be touched.
+        Guard.Extent(bounds.Radius, false, $"{name}.boundingSphere.radius");
         BoundingSphere = bounds;
         Name = name;
     }

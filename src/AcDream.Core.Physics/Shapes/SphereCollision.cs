@@ -190,26 +190,36 @@ internal static class SphereCollision
                 return TransitionState.OK;
         }
 
-        float stepDown = path.StepDownAmt * path.WalkInterp;
-        if (MathF.Abs(stepDown) < PhysicsConstants.Epsilon)
+        // Retail evaluates this routine on the x87 stack at double precision (the client sets 53-bit
+        // precision, ClientMain::ConfigureFPU, acclient.c:60885) and rounds to float only where it stores
+        // a float (CSphere::step_sphere_down, acclient.c:358615). Each rounding point below is one of those
+        // stores; the rest stays double. In float the rest normal lands one float step off and positions
+        // drift over repeated contacts.
+        double stepDownWide = (double)path.StepDownAmt * path.WalkInterp;
+        if (Math.Abs(stepDownWide) < PhysicsConstants.Epsilon)
             return TransitionState.Collided;
+        float stepDown = (float)stepDownWide;
 
         // Height above the target's centre at which sphere 0 would just touch it, over its current XY.
-        float reach = radsum + PhysicsConstants.Epsilon;
-        float restHeight = MathF.Sqrt(reach * reach - (disp.X * disp.X + disp.Y * disp.Y));
-        float fraction = (restHeight - disp.Z) / stepDown;
-        float walkInterp = (1.0f - fraction) * path.WalkInterp;
+        double reachWide = (double)radsum + PhysicsConstants.Epsilon;
+        float reach = (float)reachWide;
+        float xx = disp.X * disp.X, yy = disp.Y * disp.Y;
+        double fraction = (Math.Sqrt(reachWide * reach - ((double)xx + yy)) - disp.Z) / stepDown;
+        double walkInterp = (1.0 - fraction) * path.WalkInterp;
         if (walkInterp >= path.WalkInterp || walkInterp < -0.1f)
             return TransitionState.Collided;
 
-        float lift = stepDown * fraction;
-        disp = new Vector3(disp.X, disp.Y, disp.Z + lift) * (1.0f / reach);
-        if (disp.Z <= path.WalkableAllowance)
+        float lift = (float)(stepDown * fraction);
+        double restZ = (double)lift + disp.Z;
+        double inverseReach = 1.0 / reach;
+        double normalZ = restZ * inverseReach;
+        disp = new Vector3((float)(inverseReach * disp.X), (float)(inverseReach * disp.Y), (float)normalZ);
+        if (normalZ <= path.WalkableAllowance)
             return TransitionState.OK;
 
         Vector3 restPoint = target.Center + disp * target.Radius;
         SetRetailContactPlane(transition, disp, restPoint);
-        path.WalkInterp = walkInterp;
+        path.WalkInterp = (float)walkInterp;
         path.AddOffsetToCheckPos(new Vector3(0f, 0f, lift));
         return TransitionState.Adjusted;
     }
@@ -386,7 +396,9 @@ internal static class SphereCollision
     /// </summary>
     internal static void SetRetailContactPlane(Transition transition, Vector3 normal, Vector3 point)
     {
-        var plane = new Plane(normal, -Vector3.Dot(normal, point));
+        // Retail Plane::Plane (acclient.c:358518) sums the dot product on the x87 stack and stores D once.
+        double dot = (double)point.Z * normal.Z + (double)point.Y * normal.Y + (double)point.X * normal.X;
+        var plane = new Plane(normal, (float)-dot);
         transition.CollisionInfo.SetContactPlane(plane, isWater: true);
         transition.CollisionInfo.ContactPlaneCellId = transition.SpherePath.CheckPos.CellId;
     }

@@ -56,31 +56,57 @@ internal static class ObjectCollisions
     }
 
     /// <summary>
-    /// Collides with every object in a cell's rows, in list order (retail CObjCell::find_obj_collisions
+    /// Collides with every object listed in a cell, in list order (retail CObjCell::find_obj_collisions
     /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
-    /// non-OK result returns. Rows of one object are contiguous. An initial placement tests no object.
+    /// non-OK result returns. An initial placement tests no object.
     /// </summary>
-    public static TransitionState FindInCell(Transition transition, ReadOnlySpan<ShadowEntry> rows)
+    internal static TransitionState FindInCell(Transition transition, uint cellId, ShadowObjectRegistry.CellObjects objects)
     {
-        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
+        if (transition.SpherePath.InsertType == InsertType.InitialPlacement || objects.Count == 0)
             return TransitionState.OK;
-        uint self = transition.ObjectInfo.ObjectId;
-        int start = 0;
-        while (start < rows.Length)
+        // Only the objects the check spheres can reach are tested, in the cell's order; for the others every
+        // retail test would return OK and change nothing (see ObjectCull).
+        var candidates = transition.Cull.Candidates(transition, cellId, objects);
+        if (transition.Observer is { } observer)
+            return FindInCellObserved(transition, objects, candidates, observer);
+        foreach (int i in candidates)
         {
-            uint id = rows[start].EntityId;
-            int end = start + 1;
-            while (end < rows.Length && rows[end].EntityId == id)
-                end++;
-            if (id != self || self == 0)
+            var state = FindObjectCollisionsUnlessSelf(transition, objects.RowsOf(i));
+            if (state != TransitionState.OK)
+                return state;
+        }
+        return TransitionState.OK;
+    }
+
+    /// <summary>As <see cref="FindInCell"/>, reporting the objects out of reach as skipped (<see cref="SkipReason.OutOfReach"/>).</summary>
+    private static TransitionState FindInCellObserved(Transition transition, ShadowObjectRegistry.CellObjects objects, ReadOnlySpan<int> candidates, ITransitionObserver observer)
+    {
+        uint self = transition.ObjectInfo.ObjectId;
+        int next = 0;
+        for (int i = 0; i < objects.Count; i++)
+        {
+            var rows = objects.RowsOf(i);
+            if (next < candidates.Length && candidates[next] == i)
             {
-                var state = FindObjectCollisions(transition, rows.Slice(start, end - start));
+                next++;
+                var state = FindObjectCollisionsUnlessSelf(transition, rows);
                 if (state != TransitionState.OK)
                     return state;
             }
-            start = end;
+            else if (rows.Length > 0 && (rows[0].EntityId != self || self == 0))
+            {
+                NotifySkipped(observer, rows, SkipReason.OutOfReach);
+            }
         }
         return TransitionState.OK;
+    }
+
+    private static TransitionState FindObjectCollisionsUnlessSelf(Transition transition, ReadOnlySpan<ShadowEntry> shapes)
+    {
+        uint self = transition.ObjectInfo.ObjectId;
+        if (shapes.Length == 0 || (shapes[0].EntityId == self && self != 0))
+            return TransitionState.OK;
+        return FindObjectCollisions(transition, shapes);
     }
 
     /// <summary>One object (all its rows): the retail ladder BSP-only → cylspheres → spheres → nothing.</summary>
@@ -159,8 +185,7 @@ internal static class ObjectCollisions
         switch (shape.Kind)
         {
             case ShadowShapeKind.Bsp:
-                var partPos = new Position(row.Position.CellId, row.Position.Frame.Combine(shape.PartFrame));
-                return PartCollision.Collide(transition, shape.Model!, partPos, shape.ModelScale);
+                return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
                 path.CacheLocalSpaceSphere(row.Position, 1.0f);

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 
@@ -123,26 +124,37 @@ internal sealed class SpherePath
         WalkableCheckPos = default;
         Walkable = null;
         PlacementAllowsSliding = true;
+        _currCentersValid = false;
+        _curFresh.Valid = _checkFresh.Valid = false;
     }
 
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
     public void InitPath(Cell? beginCell, Position? beginPos, Position endPos)
     {
-        BeginCell = beginCell;
-        EndPos = endPos;
-        HasBeginPos = beginPos.HasValue;
         if (beginPos is { } begin)
         {
-            BeginPos = begin;
-            InsertType = InsertType.Transition;
-            CurPos = begin;
+            InitPath(beginCell, begin, endPos);
+            return;
         }
-        else
-        {
-            BeginPos = default;
-            InsertType = InsertType.Placement;
-            CurPos = endPos;
-        }
+        BeginCell = beginCell;
+        EndPos = endPos;
+        HasBeginPos = false;
+        BeginPos = default;
+        InsertType = InsertType.Placement;
+        CurPos = endPos;
+        CurCell = beginCell;
+        CacheGlobalCurrCenter();
+    }
+
+    /// <summary>Starts a move from <paramref name="beginPos"/> (the per-frame path: no nullable copies).</summary>
+    public void InitPath(Cell? beginCell, in Position beginPos, in Position endPos)
+    {
+        BeginCell = beginCell;
+        EndPos = endPos;
+        HasBeginPos = true;
+        BeginPos = beginPos;
+        InsertType = InsertType.Transition;
+        CurPos = beginPos;
         CurCell = beginCell;
         CacheGlobalCurrCenter();
     }
@@ -154,6 +166,8 @@ internal sealed class SpherePath
         for (int i = 0; i < NumSphere; i++)
             LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
+        _currCentersValid = false;
+        _curFresh.Valid = _checkFresh.Valid = false;
     }
 
     /// <summary>Moves the check position and its spheres by an offset.</summary>
@@ -182,23 +196,49 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
+        var matrix = CurPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
-            GlobalCurrCenter[i].Center = CurPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalCurrCenter[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin);
             GlobalCurrCenter[i].Radius = LocalSphere[i].Radius;
         }
+        // Retail sets the check position to the current one right after this (init_path, and accepting a
+        // sub-step); remember what was computed so that CacheGlobalSphere can copy it instead.
+        _currLowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
+        _currCentersFor = CurPos;
+        _currCentersValid = true;
     }
 
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
     {
+        if (_currCentersValid && SameBits(CheckPos, _currCentersFor))
+        {
+            // The same transforms of the same inputs: copying gives the very same bits.
+            for (int i = 0; i < NumSphere; i++)
+                GlobalSphere[i] = GlobalCurrCenter[i];
+            GlobalLowPoint = _currLowPoint;
+            return;
+        }
+        var matrix = CheckPos.Frame.Matrix;
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalSphere[i].Radius = LocalSphere[i].Radius;
-            GlobalSphere[i].Center = CheckPos.LocalToGlobal(LocalSphere[i].Center);
+            GlobalSphere[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CheckPos.Frame.Origin);
         }
-        GlobalLowPoint = CheckPos.LocalToGlobal(LocalLowPoint);
+        GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
     }
+
+    // What CacheGlobalCurrCenter last computed, and for which position (valid until the spheres change).
+    private Position _currCentersFor;
+    private Vector3 _currLowPoint;
+    private bool _currCentersValid;
+
+    /// <summary>True when two positions are identical bit for bit (so any function of them gives identical results).</summary>
+    internal static bool SameBits(in Position a, in Position b) =>
+        a.CellId == b.CellId
+        && a.Frame.Origin.AsVector128().AsInt32().Equals(b.Frame.Origin.AsVector128().AsInt32())
+        && a.Frame.Orientation.AsVector128().AsInt32().Equals(b.Frame.Orientation.AsVector128().AsInt32());
 
     private void ShiftGlobalSpheres(Vector3 offset)
     {
@@ -214,16 +254,58 @@ internal sealed class SpherePath
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
         float invScale = 1.0f / scale;
+        var spaceMatrix = space.Frame.Matrix;
+        // Position::localtolocal is the other position's localtoglobal, then this one's globaltolocal. The
+        // first half is the same for every object tested from one path position: it is the fresh sphere
+        // centres, computed once per position (same expression, same bits) instead of once per object.
+        ref readonly var curCentres = ref CentresAt(CurPos, ref _curFresh);
+        ref readonly var checkCentres = ref CentresAt(CheckPos, ref _checkFresh);
+        var toSpaceFromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
+        var toSpaceFromCheck = LandDefs.BlockOffset(space.CellId, CheckPos.CellId);
         for (int i = 0; i < NumSphere; i++)
         {
-            LocalSpaceCurrCenter[i].Center = space.LocalToLocal(CurPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceCurrCenter[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCur + curCentres[i], space.Frame.Origin) * invScale;
             LocalSpaceCurrCenter[i].Radius = LocalSphere[i].Radius * invScale;
             LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
-            LocalSpaceSphere[i].Center = space.LocalToLocal(CheckPos, LocalSphere[i].Center) * invScale;
+            LocalSpaceSphere[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCheck + checkCentres[i], space.Frame.Origin) * invScale;
         }
         LocalSpacePos = space;
-        LocalSpaceZ = space.Frame.GlobalToLocalVec(Vector3.UnitZ);
+        LocalSpaceZ = spaceMatrix.PositionToLocal(Vector3.UnitZ);
         LocalSpaceLowPoint = LocalSpaceSphere[0].Center - LocalSpaceZ * LocalSpaceSphere[0].Radius;
+    }
+
+    /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>
+    private struct FreshCentres
+    {
+        public bool Valid;
+        public Position For;
+        public CentrePair Centres;
+    }
+
+    [System.Runtime.CompilerServices.InlineArray(2)]
+    private struct CentrePair
+    {
+        private Vector3 _first;
+    }
+
+    private FreshCentres _curFresh, _checkFresh;
+
+    /// <summary>
+    /// The position's matrix · (local sphere centre) + origin, for each sphere,
+    /// exactly as <see cref="Position.LocalToLocal(in RotationMatrix, in Position, in RotationMatrix, Vector3)"/>
+    /// computes its first half; recomputed only when the position differs in any bit from the last one.
+    /// </summary>
+    private ref readonly CentrePair CentresAt(in Position position, ref FreshCentres fresh)
+    {
+        if (!fresh.Valid || !SameBits(position, fresh.For))
+        {
+            var matrix = position.Frame.Matrix;
+            for (int i = 0; i < NumSphere; i++)
+                fresh.Centres[i] = matrix.PositionToGlobal(LocalSphere[i].Center, position.Frame.Origin);
+            fresh.For = position;
+            fresh.Valid = true;
+        }
+        return ref fresh.Centres;
     }
 
     /// <summary>True when the remembered walkable polygon still holds the mover (or there is none).</summary>

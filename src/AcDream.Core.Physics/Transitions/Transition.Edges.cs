@@ -115,7 +115,7 @@ internal sealed partial class Transition
         if (!found)
             return TransitionState.Collided;
         path.StepUp = false;
-        edgeNormal = path.WalkablePos.Frame.LocalToGlobalVec(edgeNormal);
+        edgeNormal = path.WalkablePos.LocalToGlobalVec(edgeNormal);
         var moved = path.GlobalSphere[0].Center - path.GlobalCurrCenter[0].Center + path.CurToCheckBlockOffset();
         if (Vector3.Dot(edgeNormal, moved) > 0.0f)
             edgeNormal = -edgeNormal;

@@ -21,6 +21,8 @@ internal sealed partial class Transition
     public readonly SpherePath SpherePath = new();
     /// <summary>The contacts.</summary>
     public readonly CollisionInfo CollisionInfo = new();
+    /// <summary>Which objects of each cell the check spheres can reach (not retail; changes no result).</summary>
+    internal readonly ObjectCull Cull = new();
     /// <summary>The cells the check position touches.</summary>
     public readonly CellArray CellArray = new();
 
@@ -58,15 +60,18 @@ internal sealed partial class Transition
     /// <returns>The number of sub-steps.</returns>
     public static int CalcNumSteps(Vector3 offset, float radius, bool isViewer, out Vector3 offsetPerStep)
     {
-        float dist = offset.Length();
-        float step = dist / radius;
+        // Retail (CTransition::calc_num_steps, acclient.c:311763) measures the motion, divides it by the
+        // radius and scales the per-step offset on the x87 stack at double precision, rounding each
+        // per-step component once.
+        double dist = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
+        double step = dist / radius;
         if (!isViewer)
         {
-            if (step > 1.0f)
+            if (step > 1.0)
             {
-                int n = (int)MathF.Ceiling(step);
-                offsetPerStep = offset * (1.0f / n);
-                return n;
+                double n = Math.Ceiling(step);
+                offsetPerStep = Scale(offset, 1.0 / n);
+                return n > int.MaxValue ? int.MaxValue : (int)n;
             }
             offsetPerStep = offset;
             return offset != Vector3.Zero ? 1 : 0;
@@ -76,9 +81,12 @@ internal sealed partial class Transition
             offsetPerStep = Vector3.Zero;
             return 0;
         }
-        offsetPerStep = offset * (1.0f / step);
-        return (int)MathF.Floor(step) + 1;
+        offsetPerStep = Scale(offset, 1.0 / step);
+        double floor = Math.Floor(step) + 1;
+        return floor > int.MaxValue ? int.MaxValue : (int)floor;
     }
+
+    private static Vector3 Scale(Vector3 v, double factor) => new((float)(factor * v.X), (float)(factor * v.Y), (float)(factor * v.Z));
 
     /// <summary>
     /// Retail find_transitional_position: walks the path from the current position to the end in
@@ -121,9 +129,9 @@ internal sealed partial class Transition
             if (IsViewer && step == numSteps - 1)
             {
                 // The camera's last step covers exactly what is left of the motion.
-                float length = offset.Length();
+                double length = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
                 if (length > PhysicsConstants.Epsilon)
-                    perStep = offset * (length - path.LocalSphere[0].Radius * _subStepScale * (numSteps - 1)) / length;
+                    perStep = Scale(offset, (length - (double)(path.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
             }
             path.GlobalOffset = AdjustOffset(perStep);
             if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)

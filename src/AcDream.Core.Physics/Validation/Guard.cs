@@ -68,15 +68,129 @@ internal static class Guard
             throw new ArgumentException($"{Name(field, suffix)}: must be a finite number of zero or more, got {value}.", Name(field, suffix));
     }
 
-    /// <summary>Checks a rotation and returns it normalized; a zero-length or non-finite quaternion is refused.</summary>
+    /// <summary>
+    /// Checks a rotation. A rotation retail's Frame::IsValid accepts (squared length within 0.001 of one)
+    /// is returned unchanged, as retail uses it; any other finite, non-zero one is normalized the way
+    /// Frame::set_rotate normalizes (times the reciprocal length). Zero-length or non-finite is refused.
+    /// </summary>
     public static Quaternion Rotation(Quaternion q, string field, string? suffix = null)
     {
         if (!float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W))
             throw new ArgumentException($"{Name(field, suffix)}: quaternion must be finite, got {q}.", Name(field, suffix));
+        if (Physics.Frame.IsValidRotation(q))
+            return q;
         float length = q.Length();
         if (length < 1e-6f)
             throw new ArgumentException($"{Name(field, suffix)}: quaternion has zero length.", Name(field, suffix));
-        return Quaternion.Multiply(q, 1f / length);
+        // A length that overflows float (components near 1e19 or more) is refused rather than normalized:
+        // a client that sends such a rotation has a bug, and the error says so.
+        if (!float.IsFinite(length))
+            throw new ArgumentException($"{Name(field, suffix)}: quaternion is too long to normalize (its length overflows), got {q}.", Name(field, suffix));
+        var frame = default(Frame);
+        frame.SetRotate(q.W, q.X, q.Y, q.Z);
+        return frame.Orientation;
+    }
+
+    /// <summary>
+    /// A cell id in retail's world (LandDefs::inbound_valid_cellid): the landblock's x and y bytes are both
+    /// at most 0xFE (the world is 255 × 255 landblocks), the cell part 1..0x40 (outdoor) or 0x100..0xFFFD (indoor).
+    /// </summary>
+    public static void CellInWorld(uint cellId, string field)
+    {
+        if (!LandDefs.IsValidCellId(cellId))
+            throw new ArgumentException($"{field}: cell 0x{cellId:X8} is outside the retail world (landblock x and y must be 0x00..0xFE, the cell part 0x0001..0x0040 or 0x0100..0xFFFD).", field);
+    }
+
+    /// <summary>A landblock id (high 16 bits of a cell id) in retail's world: x and y bytes both at most 0xFE.</summary>
+    public static void LandblockInWorld(uint landblock, string field)
+    {
+        if (landblock > 0xFFFF || !LandDefs.IsValidLandblock(landblock))
+            throw new ArgumentException($"{field}: landblock 0x{landblock:X4} is outside the retail world (x and y bytes must be 0x00..0xFE).", field);
+    }
+
+    /// <summary>
+    /// A position's origin lies near the cell it names: at most <see cref="InputLimits.MaxDistanceFromCell"/>
+    /// plus <paramref name="reach"/> outside it (<paramref name="distance"/> is measured by the cell).
+    /// </summary>
+    public static void NearCell(float distance, float reach, uint cellId, Vector3 origin, string field)
+    {
+        if (!(distance <= InputLimits.MaxDistanceFromCell + reach))
+            throw new ArgumentException($"{field}: {origin} is {distance:0.#} m outside its cell 0x{cellId:X8}; a position must lie within {InputLimits.MaxDistanceFromCell} m plus the mover's reach ({reach:0.###} m) of the cell it names.", field);
+    }
+
+    /// <summary>
+    /// A polygon's vertices against its plane (computed by the caller): at most
+    /// <see cref="InputLimits.MaxPolygonVertices"/>; no vertex off the plane or on the outer side of an edge
+    /// by more than the tolerance (<see cref="InputLimits.PolygonTolerance"/>), and no two consecutive
+    /// vertices closer than it (a duplicate). Errors name the vertex.
+    /// </summary>
+    public static void ConvexPolygon(ReadOnlySpan<Vector3> v, in Plane plane, string name)
+    {
+        float largest = 0f;
+        foreach (var p in v)
+            largest = MathF.Max(largest, MathF.Max(MathF.Abs(p.X), MathF.Max(MathF.Abs(p.Y), MathF.Abs(p.Z))));
+        float tolerance = InputLimits.PolygonTolerance + InputLimits.PolygonRelativeTolerance * largest;
+        int worst = 0;
+        float worstOff = 0f;
+        for (int i = 0; i < v.Length; i++)
+        {
+            float off = MathF.Abs(Vector3.Dot(plane.Normal, v[i]) + plane.D);
+            if (!(off <= worstOff))
+            {
+                worst = i;
+                worstOff = off;
+            }
+        }
+        if (!(worstOff <= tolerance))
+            throw new ArgumentException($"{name}.vertices[{worst}]: lies {worstOff:G3} m off the polygon's plane (non-planar polygon; tolerance {tolerance:G3} m).", name);
+        for (int i = 1; i < v.Length; i++)
+            for (int k = 0; k < i; k++)
+            {
+                float apart = Vector3.Distance(v[i], v[k]);
+                if (!(apart > tolerance))
+                    throw new ArgumentException($"{name}.vertices[{i}]: repeats vertex {k} (duplicate vertex, {apart:G3} m apart; tolerance {tolerance:G3} m).", name);
+            }
+        for (int i = 0; i < v.Length; i++)
+        {
+            var a = v[i == 0 ? v.Length - 1 : i - 1];
+            var edge = v[i] - a;
+            float length = edge.Length();
+            var inward = Vector3.Cross(plane.Normal, edge) / length;
+            var next = v[i == v.Length - 1 ? 0 : i + 1];
+            float turn = Vector3.Dot(next - a, inward);
+            if (!(turn >= -tolerance))
+                throw new ArgumentException($"{name}.vertices[{i}]: is a concave corner (the next vertex lies {-turn:G3} m outside the edge into it; vertices must be convex and counter-clockwise seen from the front; tolerance {tolerance:G3} m).", name);
+            for (int k = 0; k < v.Length; k++)
+            {
+                float side = Vector3.Dot(v[k] - a, inward);
+                if (!(side >= -tolerance))
+                    throw new ArgumentException($"{name}.vertices[{k}]: lies {-side:G3} m outside the edge ending at vertex {i} (concave or self-intersecting polygon; vertices must be convex and counter-clockwise seen from the front; tolerance {tolerance:G3} m).", name);
+            }
+        }
+    }
+
+    /// <summary>True when <see cref="Frame(in Physics.Frame, string)"/> and <see cref="Rotation"/> would accept the frame (no allocation).</summary>
+    public static bool IsValidFrame(in Frame frame)
+    {
+        var o = frame.Origin;
+        var q = frame.Orientation;
+        if (!(MathF.Abs(o.X) <= InputLimits.MaxCoordinate) || !(MathF.Abs(o.Y) <= InputLimits.MaxCoordinate)
+            || !(MathF.Abs(o.Z) <= InputLimits.MaxCoordinate))
+            return false;
+        float length = q.Length();
+        return length >= 1e-6f && float.IsFinite(length);
+    }
+
+    /// <summary>
+    /// Checks a placement and normalizes its rotation in place: the origin as <see cref="Finite(Vector3, string, string?)"/>
+    /// (field + ".origin"), then the rotation as <see cref="Rotation"/> (field + ".orientation"). One
+    /// normalization per rotation: the per-frame entry points call this instead of <see cref="Frame"/> and
+    /// <see cref="Rotation"/> in turn.
+    /// </summary>
+    public static void Pose(ref Frame frame, string field)
+    {
+        Finite(frame.Origin, field, ".origin");
+        frame.Orientation = Rotation(frame.Orientation, field, ".orientation");
     }
 
     public static void Frame(in Frame frame, string field)

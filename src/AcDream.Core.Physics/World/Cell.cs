@@ -17,6 +17,12 @@ public abstract class Cell
     /// <summary>Collides the transition's check spheres with this cell's geometry (retail find_env_collisions).</summary>
     internal abstract TransitionState FindEnvCollisions(Transition transition);
 
+    /// <summary>
+    /// How far a landblock-local point lies outside this cell, in metres (0 inside), roughly: used only to
+    /// refuse positions that name a cell far from where they are (see <see cref="Validation.InputLimits.MaxDistanceFromCell"/>).
+    /// </summary>
+    internal abstract float DistanceOutside(System.Numerics.Vector3 point);
+
     /// <inheritdoc />
     public override string ToString() => $"{GetType().Name} 0x{Id:X8}";
 }

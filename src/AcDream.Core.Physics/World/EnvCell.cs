@@ -47,7 +47,7 @@ public sealed class EnvCell : Cell
     private readonly CellPortal[] _portals;
 
     /// <summary>Creates an env cell.</summary>
-    /// <param name="id">Full cell id; the cell part must be 0x100 or more.</param>
+    /// <param name="id">Full cell id in the retail world (<see cref="LandDefs.IsValidCellId"/>); the cell part must be 0x100..0xFFFD.</param>
     /// <param name="frame">The cell's placement, landblock-local.</param>
     /// <param name="physicsBsp">The collision BSP (cell space), or null for none.</param>
     /// <param name="cellBsp">The containment BSP (cell space): its split planes bound the cell's interior.</param>
@@ -55,7 +55,8 @@ public sealed class EnvCell : Cell
     public EnvCell(uint id, Frame frame, BspTree? physicsBsp, BspTree cellBsp, IReadOnlyList<CellPortal>? portals = null) : base(id)
     {
         if (LandDefs.IsLandCell(id) || (id & 0xFFFF) == CellPortal.Outside)
-            throw new ArgumentException($"cell 0x{id:X8}: an env cell's index must be 0x100..0xFFFE.", nameof(id));
+            throw new ArgumentException($"cell 0x{id:X8}: an env cell's index must be 0x100..0xFFFD.", nameof(id));
+        Guard.CellInWorld(id, $"cell 0x{id:X8}");
         Guard.Frame(frame, $"cell 0x{id:X8}.frame");
         frame.Orientation = Guard.Rotation(frame.Orientation, $"cell 0x{id:X8}.frame.orientation");
         Position = new Position(id, frame);
@@ -82,6 +83,17 @@ public sealed class EnvCell : Cell
     /// <summary>Retail sphere_intersects_cell for a landblock-local sphere.</summary>
     internal BoundingType IntersectsSphere(in Sphere sphere) =>
         BspQuery.SphereIntersectsCellBsp(CellBsp, new Sphere(Position.Frame.GlobalToLocal(sphere.Center), sphere.Radius));
+
+    /// <summary>
+    /// The distance from the bounding sphere of the cell's physics BSP (or, without one or when it is
+    /// empty, of its containment BSP; when both are empty, from the cell's origin).
+    /// </summary>
+    internal override float DistanceOutside(Vector3 point)
+    {
+        var bounds = PhysicsBsp is { } physics && physics.Bounds.Radius > 0f ? physics.Bounds : CellBsp.Bounds;
+        var centre = Position.Frame.LocalToGlobal(bounds.Center);
+        return MathF.Max(Vector3.Distance(point, centre) - bounds.Radius, 0f);
+    }
 
     /// <inheritdoc />
     internal override TransitionState FindEnvCollisions(Transition transition)

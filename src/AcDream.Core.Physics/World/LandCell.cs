@@ -42,6 +42,16 @@ public sealed class LandCell : Cell
     /// <summary>Retail point_in_cell for land: the point's X/Y lie on one of the triangles.</summary>
     public bool ContainsPoint(Vector3 point) => FindTerrainPolygon(point) is not null;
 
+    /// <summary>The horizontal distance from the cell's 24 m square.</summary>
+    internal override float DistanceOutside(Vector3 point)
+    {
+        var corner = LandDefs.LandCellCorner(Id);
+        float size = PhysicsConstants.LandCellLength;
+        float dx = System.MathF.Max(System.MathF.Max(corner.X - point.X, point.X - (corner.X + size)), 0f);
+        float dy = System.MathF.Max(System.MathF.Max(corner.Y - point.Y, point.Y - (corner.Y + size)), 0f);
+        return System.MathF.Sqrt(dx * dx + dy * dy);
+    }
+
     /// <inheritdoc />
     internal override TransitionState FindEnvCollisions(Transition transition)
     {

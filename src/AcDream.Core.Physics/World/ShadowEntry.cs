@@ -48,6 +48,11 @@ internal readonly struct ShadowEntry
     public readonly byte CylSphereCount;
     /// <summary>How many spheres the object has.</summary>
     public readonly byte SphereCount;
+    /// <summary>
+    /// BSP rows: the part's placement, the object's frame combined with the part's (Frame::combine), computed
+    /// when the row is written rather than at every test (the same arithmetic, so the same bits).
+    /// </summary>
+    public readonly Position PartPosition;
 
     internal ShadowEntry(uint entityId, ShadowShape shape, in Position position, float scale, PhysicsState state, ShadowFlags flags, int cylCount, int sphereCount)
     {
@@ -59,6 +64,7 @@ internal readonly struct ShadowEntry
         Flags = flags;
         CylSphereCount = (byte)Math.Min(cylCount, 255);
         SphereCount = (byte)Math.Min(sphereCount, 255);
+        PartPosition = shape.Kind == ShadowShapeKind.Bsp ? new Position(position.CellId, position.Frame.Combine(shape.PartFrame)) : default;
     }
 
     /// <summary>The shape's kind.</summary>

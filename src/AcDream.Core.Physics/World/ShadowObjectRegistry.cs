@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Numerics;
 using System.Runtime.InteropServices;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
@@ -8,16 +9,19 @@ using AcDream.Core.Physics.Validation;
 namespace AcDream.Core.Physics.World;
 
 /// <summary>
-/// The objects of the world, as flat per-cell lists of <see cref="ShadowEntry"/> rows (retail shadow
-/// objects): one row per collision shape, an object present once in every cell it overlaps.
+/// The objects of the world, as per-cell lists of objects (retail CObjCell's shadow list), each object
+/// carrying its <see cref="ShadowEntry"/> rows: one row per collision shape, an object present once in every
+/// cell it overlaps.
 /// Single writer: register, move and unregister from one thread while no query runs; queries may run in
 /// parallel when nothing is being modified.
 /// </summary>
 public sealed class ShadowObjectRegistry
 {
-    private sealed class Record
+    internal sealed class Record
     {
+        public required uint Id;
         public required ShadowShape[] Shapes;
+        public required ShadowEntry[] Rows;
         public Position Position;
         public float Scale;
         public PhysicsState State;
@@ -25,16 +29,32 @@ public sealed class ShadowObjectRegistry
         public int CylCount;
         public int SphereCount;
         public Sphere LocalBounds;
+        /// <summary>The object's reach box in its own landblock's space (see <see cref="ReachBox"/>).</summary>
+        public Vector3 ReachMin, ReachMax;
+        /// <summary>The cells the object is listed in.</summary>
         public readonly List<uint> Cells = new(4);
+        /// <summary>For each entry of <see cref="Cells"/>, the object's index in that cell's list.</summary>
+        public readonly List<int> Slots = new(4);
     }
 
+    /// <summary>
+    /// One object in a cell's list, which of the object's cells that list is (its index in
+    /// <see cref="Record.Cells"/>), and the object's reach box in that cell's landblock space (see
+    /// <see cref="ReachBox"/>), kept beside the record so a cull reads the list alone.
+    /// </summary>
+    internal readonly record struct Slot(Record Record, int CellIndex, Vector3 ReachMin, Vector3 ReachMax);
+
     private readonly CellGraph _graph;
-    private readonly Dictionary<uint, List<ShadowEntry>> _byCell = new();
+    private readonly Dictionary<uint, List<Slot>> _byCell = new();
     private readonly Dictionary<uint, Record> _objects = new();
     private readonly CellArray _scratch = new();
+    private readonly List<uint> _newCells = new(4);
 
     /// <summary>Creates an empty registry over a world's cells.</summary>
     public ShadowObjectRegistry(CellGraph graph) => _graph = graph ?? throw new ArgumentNullException(nameof(graph));
+
+    /// <summary>Changes with every registration, move and removal (a transition's object cull starts over).</summary>
+    internal int Version { get; private set; }
 
     /// <summary>How many objects are registered.</summary>
     public int Count => _objects.Count;
@@ -67,56 +87,126 @@ public sealed class ShadowObjectRegistry
             if (shapes[i] is null)
                 throw new ArgumentException($"{name}.shapes[{i}]: is null.", nameof(shapes));
         Guard.Extent(scale, false, $"{name}.scale");
-        position = CheckPosition(position, name);
+        position = CheckPosition(position, entityId);
 
-        var record = new Record { Shapes = (ShadowShape[])shapes.Clone(), Position = position, Scale = scale, State = state, Flags = flags };
+        var record = new Record
+        {
+            Id = entityId, Shapes = (ShadowShape[])shapes.Clone(), Rows = new ShadowEntry[shapes.Length],
+            Position = position, Scale = scale, State = state, Flags = flags,
+        };
         foreach (var shape in shapes)
         {
             if (shape.Kind == ShadowShapeKind.Cylinder) record.CylCount++;
             if (shape.Kind == ShadowShapeKind.Sphere) record.SphereCount++;
         }
         record.LocalBounds = Enclose(shapes);
-        FindCells(record, record.Cells);
+        FindCells(record, _newCells);
         _objects.Add(entityId, record);
-        AddRows(entityId, record);
+        WriteRows(record);
+        AddToCells(record, _newCells);
     }
 
-    /// <summary>Moves a registered object; its rows migrate between cells. Unknown ids and cells throw, leaving everything unchanged.</summary>
+    /// <summary>
+    /// Moves a registered object; it leaves its old cells (as <see cref="Unregister"/> does) and is appended
+    /// to its new cells' lists. Unknown ids and cells throw, leaving everything unchanged. Allocates nothing
+    /// once the cells involved have been seen before.
+    /// </summary>
     public void Move(uint entityId, Position position)
     {
         if (!_objects.TryGetValue(entityId, out var record))
             throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
-        position = CheckPosition(position, $"object 0x{entityId:X8}");
+        position = CheckPosition(position, entityId);
         var old = record.Position;
         record.Position = position;
-        var cells = new List<uint>(4);
         try
         {
-            FindCells(record, cells);
+            FindCells(record, _newCells);
         }
         catch
         {
             record.Position = old;
             throw;
         }
-        RemoveRows(entityId, record);
-        record.Cells.Clear();
-        record.Cells.AddRange(cells);
-        AddRows(entityId, record);
+        RemoveFromCells(record);
+        WriteRows(record);
+        AddToCells(record, _newCells);
     }
 
-    /// <summary>Removes an object; false when it was not registered.</summary>
+    /// <summary>
+    /// Registers an object again with its shapes, scale and flags at another position and state
+    /// (HasPhysicsBsp stays when it was derived from the setup). Used to place a scene's object the way
+    /// a parity file says; on failure the object stays as it was.
+    /// </summary>
+    internal void Replace(uint entityId, Position position, PhysicsState state)
+    {
+        if (!_objects.TryGetValue(entityId, out var old))
+            throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+        Unregister(entityId);
+        try
+        {
+            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags);
+        }
+        catch
+        {
+            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags);
+            throw;
+        }
+    }
+
+    /// <summary>
+    /// Removes an object; false when it was not registered. In each of its cells the cell's last object
+    /// takes its place (retail order, see <see cref="RemoveFromCells"/>); the cost is constant per cell.
+    /// </summary>
     public bool Unregister(uint entityId)
     {
         if (!_objects.Remove(entityId, out var record))
             return false;
-        RemoveRows(entityId, record);
+        RemoveFromCells(record);
         return true;
     }
 
-    /// <summary>The rows of a cell (empty for a cell with no objects). Valid until the registry is next modified.</summary>
-    internal ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId) =>
-        _byCell.TryGetValue(cellId, out var rows) ? CollectionsMarshal.AsSpan(rows) : ReadOnlySpan<ShadowEntry>.Empty;
+    /// <summary>
+    /// The rows of a cell's objects, in the order they are tested (empty for a cell with no objects): rows of
+    /// one object are contiguous. Builds a new array: for inspection and tests, not for the per-frame path.
+    /// </summary>
+    internal ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId)
+    {
+        if (!_byCell.TryGetValue(cellId, out var slots) || slots.Count == 0)
+            return ReadOnlySpan<ShadowEntry>.Empty;
+        var rows = new List<ShadowEntry>();
+        foreach (var slot in slots)
+            rows.AddRange(slot.Record.Rows);
+        return rows.ToArray();
+    }
+
+    /// <summary>The objects listed in a cell, in the order they are tested; allocates nothing (the per-frame path).</summary>
+    internal CellObjects ObjectsInCell(uint cellId) => new(_byCell.TryGetValue(cellId, out var slots) ? slots : null);
+
+    /// <summary>A cell's objects: how many, and each one's rows. Valid until the registry is next modified.</summary>
+    internal readonly struct CellObjects
+    {
+        private readonly List<Slot>? _slots;
+
+        internal CellObjects(List<Slot>? slots) => _slots = slots;
+
+        /// <summary>How many objects the cell lists.</summary>
+        public int Count => _slots?.Count ?? 0;
+
+        /// <summary>The rows (one per shape) of the cell's <paramref name="index"/>-th object.</summary>
+        public ReadOnlySpan<ShadowEntry> RowsOf(int index) => _slots![index].Record.Rows;
+
+        /// <summary>
+        /// True when the <paramref name="index"/>-th object's reach box (this cell's landblock space) meets
+        /// the box <paramref name="min"/>..<paramref name="max"/>.
+        /// </summary>
+        public bool Reaches(int index, Vector3 min, Vector3 max)
+        {
+            var slot = _slots![index];
+            return slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
+                && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
+                && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z;
+        }
+    }
 
     /// <summary>The cells an object is listed in.</summary>
     public IReadOnlyList<uint> CellsOf(uint entityId) =>
@@ -126,11 +216,17 @@ public sealed class ShadowObjectRegistry
     public Position PositionOf(uint entityId) =>
         _objects.TryGetValue(entityId, out var record) ? record.Position : throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
 
-    private Position CheckPosition(Position position, string name)
+    /// <summary>Validates a position; the field names (which hold the id) are built only when a check fails.</summary>
+    private Position CheckPosition(Position position, uint entityId)
     {
-        Guard.Frame(position.Frame, $"{name}.position");
-        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, $"{name}.position.orientation");
-        _graph.GetRequired(position.CellId, $"{name}.position.cell");
+        if (!Guard.IsValidFrame(position.Frame) || _graph.Get(position.CellId) is null)
+        {
+            string name = $"object 0x{entityId:X8}";
+            Guard.Frame(position.Frame, $"{name}.position");
+            Guard.Rotation(position.Frame.Orientation, $"{name}.position.orientation");
+            _graph.GetRequired(position.CellId, $"{name}.position.cell");
+        }
+        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
         return position;
     }
 
@@ -221,53 +317,89 @@ public sealed class ShadowObjectRegistry
             }
     }
 
-    private void AddRows(uint entityId, Record record)
+    /// <summary>Writes the object's rows (one per shape) from its current position and state.</summary>
+    private static void WriteRows(Record record)
     {
-        foreach (uint cellId in record.Cells)
+        for (int i = 0; i < record.Shapes.Length; i++)
+            record.Rows[i] = new ShadowEntry(record.Id, record.Shapes[i], record.Position, record.Scale, record.State, record.Flags, record.CylCount, record.SphereCount);
+        ReachBox(record, out record.ReachMin, out record.ReachMax);
+    }
+
+    /// <summary>
+    /// The box (landblock space of the object's cell) outside which a mover sphere's centre, less its
+    /// radius, cannot touch any of the object's shapes in any of retail's shape tests: a BSP part's
+    /// bounding sphere, a sphere, or a cylinder's upright slab (its XY circle and Z span, the slab test of
+    /// CCylSphere::collides_with_sphere, whose corners a sphere around it would miss). Widened by a margin
+    /// far above float rounding (and the BSP test's EPSILON slack), so a cull by it never skips a shape
+    /// that the exact test would touch.
+    /// </summary>
+    private static void ReachBox(Record record, out Vector3 min, out Vector3 max)
+    {
+        min = new Vector3(float.MaxValue);
+        max = new Vector3(float.MinValue);
+        foreach (var shape in record.Shapes)
         {
-            if (!_byCell.TryGetValue(cellId, out var rows))
-                _byCell.Add(cellId, rows = new List<ShadowEntry>());
-            foreach (var shape in record.Shapes)
-                rows.Add(new ShadowEntry(entityId, shape, record.Position, record.Scale, record.State, record.Flags, record.CylCount, record.SphereCount));
+            if (shape.Kind == ShadowShapeKind.Cylinder)
+            {
+                var cyl = shape.Cylinder;
+                var low = record.Position.LocalToGlobal(cyl.LowPoint);
+                min = Vector3.Min(min, low - new Vector3(cyl.Radius, cyl.Radius, 0));
+                max = Vector3.Max(max, low + new Vector3(cyl.Radius, cyl.Radius, cyl.Height));
+            }
+            else
+            {
+                var centre = record.Position.LocalToGlobal(shape.Bounds.Center);
+                var r = new Vector3(shape.Bounds.Radius);
+                min = Vector3.Min(min, centre - r);
+                max = Vector3.Max(max, centre + r);
+            }
+        }
+        var margin = new Vector3(0.05f * MathF.Max(1f, record.Scale) + 0.01f);
+        min -= margin;
+        max += margin;
+    }
+
+    /// <summary>Appends the object to the lists of <paramref name="cells"/> and records them as its cells.</summary>
+    private void AddToCells(Record record, List<uint> cells)
+    {
+        Version++;
+        record.Cells.Clear();
+        record.Slots.Clear();
+        for (int k = 0; k < cells.Count; k++)
+        {
+            uint cellId = cells[k];
+            if (!_byCell.TryGetValue(cellId, out var slots))
+                _byCell.Add(cellId, slots = new List<Slot>());
+            record.Cells.Add(cellId);
+            record.Slots.Add(slots.Count);
+            var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
+            slots.Add(new Slot(record, k, record.ReachMin + offset, record.ReachMax + offset));
         }
     }
 
     /// <summary>
-    /// Removes an object's rows from its cells the retail way: the cell's last object takes the removed
-    /// object's place (CObjCell::remove_shadow_object moves the last entry into the hole, acclient
-    /// CObjCell.c:491), so the order objects are tested in changes as retail's does.
+    /// Takes the object out of its cells' lists the retail way: the cell's last object moves into the hole
+    /// (CObjCell::remove_shadow_object, acclient CObjCell.c:491), so the order objects are tested in changes
+    /// as retail's does. Each object knows its index in each of its cells, so no list is searched. Emptied
+    /// lists are kept for reuse.
     /// </summary>
-    private void RemoveRows(uint entityId, Record record)
+    private void RemoveFromCells(Record record)
     {
-        foreach (uint cellId in record.Cells)
+        Version++;
+        for (int k = 0; k < record.Cells.Count; k++)
         {
-            if (!_byCell.TryGetValue(cellId, out var rows))
-                continue;
-            int start = 0;
-            while (start < rows.Count && rows[start].EntityId != entityId)
-                start++;
-            if (start == rows.Count)
-                continue;
-            int end = start;
-            while (end < rows.Count && rows[end].EntityId == entityId)
-                end++;
-            int lastStart = rows.Count;
-            while (lastStart > end && rows[lastStart - 1].EntityId == rows[rows.Count - 1].EntityId)
-                lastStart--;
-            if (lastStart > end)
+            var slots = _byCell[record.Cells[k]];
+            int hole = record.Slots[k];
+            int last = slots.Count - 1;
+            if (hole != last)
             {
-                // Move the last object's rows into the hole, then drop the tail.
-                var last = rows.GetRange(lastStart, rows.Count - lastStart);
-                rows.RemoveRange(lastStart, rows.Count - lastStart);
-                rows.RemoveRange(start, end - start);
-                rows.InsertRange(start, last);
+                var moved = slots[last];
+                slots[hole] = moved;
+                moved.Record.Slots[moved.CellIndex] = hole;
             }
-            else
-            {
-                rows.RemoveRange(start, end - start);
-            }
-            if (rows.Count == 0)
-                _byCell.Remove(cellId);
+            slots.RemoveAt(last);
         }
+        record.Cells.Clear();
+        record.Slots.Clear();
     }
 }

@@ -16,7 +16,11 @@ public sealed class Terrain
 
     private readonly float[] _heights;
 
-    /// <summary>Creates terrain from 81 heights, indexed [x * 9 + y] (x east, y north), in metres (finite, within ±<see cref="InputLimits.MaxCoordinate"/>).</summary>
+    /// <summary>
+    /// Creates terrain from 81 heights, indexed [x * 9 + y] (x east, y north), in metres (finite, within
+    /// ±<see cref="InputLimits.MaxCoordinate"/>), for a landblock inside the retail world
+    /// (<see cref="LandDefs.IsValidLandblock"/>: x and y bytes 0x00..0xFE).
+    /// </summary>
     public Terrain(uint landblock, ReadOnlySpan<float> heights, string name = "terrain")
     {
         if (heights.Length != VerticesPerSide * VerticesPerSide)
@@ -25,6 +29,7 @@ public sealed class Terrain
             Guard.Coordinate(heights[i], $"{name}.heights[{i}]");
         if (landblock > 0xFFFF)
             throw new ArgumentException($"{name}.landblock: 0x{landblock:X} is not a 16-bit landblock id.", nameof(landblock));
+        Guard.LandblockInWorld(landblock, $"{name}.landblock");
         Landblock = landblock;
         _heights = heights.ToArray();
     }

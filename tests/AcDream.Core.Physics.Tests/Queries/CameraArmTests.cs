@@ -41,6 +41,12 @@ public class CameraArmTests
         Assert.True(blocked.Blocked);
         Assert.InRange(blocked.Camera.Origin.Y, 99.691f - 0.006f, 99.691f + 1e-4f);
 
+        // The pivot's cell id names only its frame: labelled with the landblock's first cell, 76 m away, the
+        // arm starts in the cell that holds the pivot and meets the same slab.
+        var relabelled = q.CameraArm(At(0xA9B40001, 100, 97, 1.5f), new Vector3(100, 103, 1.5f));
+        Assert.Equal(Land, relabelled.Camera.CellId);
+        Assert.Equal(blocked.Camera.Origin, relabelled.Camera.Origin);
+
         var clear = q.CameraArm(At(Land, 96, 97, 1.5f), new Vector3(96, 103, 1.5f));
         Assert.Equal(CameraPlacement.Swept, clear.Placement);
         Assert.False(clear.Blocked);
@@ -93,5 +99,29 @@ public class CameraArmTests
         var placed = new WorldQuery(world).CameraArm(At(0xA9B40001, 5, 5, 2), new Vector3(5, 5 + 0.3f * 1200, 2));
         Assert.Equal(CameraPlacement.AtDesired, placed.Placement);
         Assert.Equal(0xA9B50000u, placed.Camera.CellId & 0xFFFF0000u);   // y 365: the next block north (192..384)
+    }
+
+    [Fact]
+    public void RetailQuirk_ACameraThatBeganIndoors_IgnoresTerrainItIsAlreadyUnderWhileRisingAwayFromIt()
+    {
+        // acclient 0x0050D010 (OBJECTINFO::validate_walkable, viewer arm): when the back-off fraction is not in
+        // (0, 1] and the transition began in an indoor cell, the terrain is passed. The cottage sunk 0.5 m
+        // (ground at z = 0.5, the room's floor at 0) and its door removed: the camera leaves the room through
+        // the doorway with its sphere 0.3 m under the ground's plane, rising slowly (the fraction is negative),
+        // and ends at the desired point. Without the indoor exception it would be pushed along its motion.
+        var json = SceneLibrary.ReadText("cottage").Replace("\"landblocks\": [{ \"id\": \"0xA9B4\", \"height\": 0 }]",
+            "\"landblocks\": [{ \"id\": \"0xA9B4\", \"height\": 0.5 }]");
+        var world = SceneLoader.Load(json).World;
+        Assert.True(world.Objects.Unregister(0x7000_0001));
+        var arm = new WorldQuery(world).CameraArm(At(Room, 100, 100.5f, 0.5f), new Vector3(100, 97, 0.55f));
+        Assert.Equal(CameraPlacement.Swept, arm.Placement);
+        Assert.False(arm.Blocked, $"{arm.Camera} n={arm.Normal}");
+        Assert.Equal(Land, arm.Camera.CellId);
+        AssertVec.Near(new Vector3(100, 97, 0.55f), arm.Camera.Origin, 1e-4f);
+
+        // The same camera begun outdoors (just outside the doorway) is stopped by the ground.
+        var outdoors = new WorldQuery(world).CameraArm(At(Land, 100, 99.5f, 0.5f), new Vector3(100, 97, 0.55f));
+        Assert.True(outdoors.Blocked);
+        AssertVec.Near(Vector3.UnitZ, outdoors.Normal, 1e-5f);
     }
 }

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Validation;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Robustness;
@@ -82,7 +83,7 @@ public class BadInputTests
         ["E03"] = new("PhysicsEngine.Resolve", "target origin +∞", "target.origin", f => { var t = f.Target; t.Frame.Origin.Y = float.PositiveInfinity; f.Resolve(f.State, t); }),
         ["E04"] = new("PhysicsEngine.Resolve", "target origin beyond ±100 km", "target.origin", f => f.Resolve(f.State, f.Offset(new Vector3(0, 200_000, 0)))),
         ["E05"] = new("PhysicsEngine.Resolve", "state orientation zero-length quaternion", "state.position.orientation", f => { var s = f.State; s.Position.Frame.Orientation = Zero; f.Resolve(s, f.Target); }),
-        ["E06"] = new("PhysicsEngine.Resolve", "target orientation NaN", "target.orientation", f => { var t = f.Target; t.Frame.Orientation.W = float.NaN; f.Resolve(f.State, t); }),
+        ["E06"] = new("PhysicsEngine.Resolve", "target orientation NaN", "target.orientation", f => { var t = f.Target; t.Frame.Orientation = t.Frame.Orientation with { W = float.NaN }; f.Resolve(f.State, t); }),
         ["E07"] = new("PhysicsEngine.Resolve", "state cell unknown", "state.position.cell", f => { var s = f.State; s.Position.CellId = 0x12340001; f.Resolve(s, f.Target); }),
         ["E08"] = new("PhysicsEngine.Resolve", "target cell label unknown", "target.cell", f => { var t = f.Target; t.CellId = 0xA9B40200; f.Resolve(f.State, t); }),
         ["E09"] = new("PhysicsEngine.Resolve", "contact plane normal NaN", "state.contactPlane.normal", f => { var s = f.State; s.ContactPlane.Normal = NaN3; f.Resolve(s, f.Target); }),
@@ -202,7 +203,49 @@ public class BadInputTests
         ["W17"] = new("Building()", "shell null", "shell", _ => new Building(null!, TestGeometry.At(1, 1, 0), [])),
         ["W18"] = new("Building()", "position NaN", "building.position.origin", _ => new Building(Model(), new Position(TestGeometry.At(1, 1, 0).CellId, NaN3), [])),
         ["W19"] = new("Building()", "rotation zero-length", "building.position.orientation", _ => House(rotation: Zero)),
+        // Hostile input (issue 14)
+        ["H01"] = new("PhysicsEngine.Resolve", "target rotation with components 1e20 (length overflows)", "target.orientation", f => { var t = f.Target; t.Frame.Orientation = Huge; f.Resolve(f.State, t); }),
+        ["H02"] = new("PhysicsEngine.Resolve", "state rotation with components 1e20", "state.position.orientation", f => { var s = f.State; s.Position.Frame.Orientation = Huge; f.Resolve(s, f.Target); }),
+        ["H03"] = new("Registry.Register(setup)", "rotation with components 1e20", "object 0x00000003.position.orientation", f => f.World.Objects.Register(3, Ball(0.5f), new Position(TestGeometry.At(30, 30, 0).CellId, new Frame(new Vector3(30, 30, 0), Huge)))),
+        ["H04"] = new("Registry.Move", "rotation with components 1e20", "object 0x00000002.position.orientation", f => f.World.Objects.Move(2, new Position(TestGeometry.At(30, 30, 0).CellId, new Frame(new Vector3(30, 30, 0), Huge)))),
+        ["H05"] = new("Polygon()", "non-planar quad (a corner 0.1 m up)", "poly.vertices[0]", _ => new Polygon([Vector3.Zero, new Vector3(1, 0, 0), new Vector3(1, 1, 0.1f), new Vector3(0, 1, 0)], name: "poly")),
+        ["H06"] = new("Polygon()", "concave pentagon (an arrow)", "poly.vertices[3]", _ => new Polygon([Vector3.Zero, new Vector3(2, 0, 0), new Vector3(2, 2, 0), new Vector3(1, 1, 0), new Vector3(0, 2, 0)], name: "poly")),
+        ["H07"] = new("Polygon()", "duplicate vertex (a square with a corner twice)", "poly.vertices[2]", _ => new Polygon([Vector3.Zero, Vector3.UnitX, Vector3.UnitX, new Vector3(1, 1, 0), Vector3.UnitY], name: "poly")),
+        ["H08"] = new("Polygon()", "a million vertices", "poly.vertices", _ => new Polygon(new Vector3[1_000_000], name: "poly")),
+        ["H09"] = new("Polygon()", "self-intersecting (a pentagram)", "poly.vertices", _ => new Polygon(Pentagram(), name: "poly")),
+        ["H10"] = new("PhysicsModel()", "bounding radius 0 (as the scene loader refuses)", "model.boundingSphere.radius", _ => new PhysicsModel(CellBox(), new Sphere(default, 0f))),
+        ["H11"] = new("Terrain()", "landblock 0xFFFF (outside the world)", "terrain.landblock", _ => new Terrain(0xFFFF, new float[81])),
+        ["H12"] = new("Terrain()", "landblock 0x00FF (y outside the world)", "terrain.landblock", _ => new Terrain(0x00FF, new float[81])),
+        ["H13"] = new("EnvCell()", "landblock 0xFF01 (x outside the world)", "cell 0xFF010100", _ => new EnvCell(0xFF010100, Frame.Identity, null, CellBox())),
+        ["H14"] = new("PhysicsEngine.Resolve", "state 10 km outside its landblock", "state.position.origin", f => { var s = f.State; s.Position.Frame.Origin.X += 10_000f; f.Resolve(s, f.Offset(new Vector3(10_000f, 0.3f, 0))); }),
+        ["H15"] = new("PhysicsEngine.Place", "position 10 km outside its landblock", "position.origin", f => new PhysicsEngine(f.World).Place(f.Player, f.Offset(new Vector3(0, 10_000f, 0)))),
+        ["H16"] = new("BspTree.Create", $"a chain of {InputLimits.MaxBspDepth + 1} nodes (deeper than InputLimits.MaxBspDepth)", $"gfx.nodes[{InputLimits.MaxBspDepth}]", _ => BspTree.Create([Quad()], Chain(InputLimits.MaxBspDepth + 1), "gfx")),
+        ["H17"] = new("BspCompiler.Compile", $"more than InputLimits.MaxCompilePolygons polygons", "gfx: at most", _ => BspCompiler.Compile(Enumerable.Repeat(Quad(), InputLimits.MaxCompilePolygons + 1).ToArray(), "gfx")),
     };
+
+    private static readonly Quaternion Huge = new(1e20f, 1e20f, 0f, 1e20f);
+
+    /// <summary>A five-pointed star: every turn the same way, but winding twice.</summary>
+    private static Vector3[] Pentagram()
+    {
+        var v = new Vector3[5];
+        for (int i = 0; i < 5; i++)
+        {
+            double a = 2 * Math.PI * (2 * i) / 5;
+            v[i] = new Vector3((float)Math.Cos(a), (float)Math.Sin(a), 0f);
+        }
+        return v;
+    }
+
+    /// <summary>A chain of <paramref name="depth"/> levels: split nodes each with one front child, ending in a leaf holding polygon 0.</summary>
+    internal static BspNodeData[] Chain(int depth)
+    {
+        var nodes = new BspNodeData[depth];
+        for (int i = 0; i < depth - 1; i++)
+            nodes[i] = Split(i + 1, -1);
+        nodes[depth - 1] = Leaf(0);
+        return nodes;
+    }
 
     public static TheoryData<string> RowIds()
     {

@@ -105,11 +105,28 @@ public class RecordedDeterminismTests
         ulong h = 14695981039346656037UL;
         void Add(uint x) { for (int i = 0; i < 4; i++) { h ^= (byte)(x >> (8 * i)); h *= 1099511628211UL; } }
         var state = mover.Start;
+        var body = mover.StartBody;
         for (int f = 0; f < mover.FrameCount; f++)
         {
-            var target = state.Position;
-            target.Frame.Origin += mover.Motion[f];
-            var r = engine.Resolve(mover.Description, state, target);
+            MoveResult r;
+            if (mover.IsBody)
+            {
+                // A body mover (PhysicsEngine.Step): its velocity and quanta count too.
+                var step = mover.Steps[f];
+                var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                body = stepped.Body;
+                Add(BitConverter.SingleToUInt32Bits(body.Velocity.X));
+                Add(BitConverter.SingleToUInt32Bits(body.Velocity.Y));
+                Add(BitConverter.SingleToUInt32Bits(body.Velocity.Z));
+                Add((uint)stepped.Quanta);
+                r = stepped.Move;
+            }
+            else
+            {
+                var target = state.Position;
+                target.Frame.Origin += mover.Motion[f];
+                r = engine.Resolve(mover.Description, state, target);
+            }
             foreach (uint v in FrameValues(r)) Add(v);
             Add((uint)r.CollidedObjects.Length);
             foreach (uint id in r.CollidedObjects.Span) Add(id);

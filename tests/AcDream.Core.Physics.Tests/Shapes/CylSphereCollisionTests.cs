@@ -121,6 +121,28 @@ public class CylSphereCollisionTests
         Assert.Equal(CellId, t.CollisionInfo.ContactPlaneCellId);
     }
 
+    /// <summary>
+    /// Retail CCylSphere::step_sphere_down (acclient.c:361573) keeps the lift and the walk fraction on the
+    /// x87 stack at double precision and rounds only its float stores. By hand, for a post 1.7 m high, a
+    /// check sphere of radius 0.48 at z = 2.1556098461151123 stepping down 0.5: lift = f(1.7f + 0.48f − z)
+    /// = 0.024390190839767456 and walk_interp = f(1 − lift/0.5) = 0.95121961832046509, both from the
+    /// unrounded double lift; in float the lift rounds twice (0.024390220642089844) and walk_interp lands one
+    /// float step lower (0.95121955871582031).
+    /// </summary>
+    [Fact]
+    public void StepDown_ComputesTheLiftInDoublePrecision_AsRetailsX87()
+    {
+        var t = Mover(new Vector3(0, 0, 2.6556098461151123f), new Vector3(0, 0, 2.1556098461151123f), radius: 0.48f);
+        t.SpherePath.StepDown = true;
+        t.SpherePath.StepDownAmt = 0.5f;
+        var state = CylSphereCollision.IntersectsSphere(new CylSphere(Vector3.Zero, 1f, 1.7f), t);
+
+        Assert.Equal(TransitionState.Adjusted, state);
+        Assert.Equal(0.95121961832046509f, t.SpherePath.WalkInterp);
+        Assert.Equal(2.1556098461151123f + 0.024390190839767456f, CheckOrigin(t).Z);
+        Assert.Equal(-1.7000000476837158f, t.CollisionInfo.ContactPlane.D);
+    }
+
     [Fact]
     public void PerfectClip_Wall_SolvesTheSweptCircleTimeOfImpact()
     {

@@ -185,6 +185,35 @@ public class SphereCollisionTests
         Assert.Equal(CellId, t.CollisionInfo.ContactPlaneCellId);
     }
 
+    /// <summary>
+    /// Retail computes CSphere::step_sphere_down (acclient.c:358615) on the x87 stack at double precision
+    /// (53-bit, ClientMain::ConfigureFPU, acclient.c:60885), storing floats only at its float locals. Stepping
+    /// down 0.5 onto a target of radius 0.5 with the check sphere (radius 0.5) at (0.3, 0.2, 0.6) from it, by
+    /// hand in that sequence: radsum = f(1 − 0.0002f); reach = radsum + 0.0002f in double;
+    /// fraction = (√(reach · f(reach) − (f(0.3²) + f(0.2²))) − 0.6f) / 0.5 in double; lift = f(0.5 · fraction)
+    /// = 0.33273789286613464; normal = (f(0.3f / f(reach)), f(0.2f / f(reach)), f((lift + 0.6f) / f(reach)))
+    /// with the divisions in double = (0.3f, 0.2f, 0.93273794651031494); walk_interp = f(1 − fraction)
+    /// = 0.33452421426773071. The same steps in float give a rest normal Z one float step lower
+    /// (0.93273788690567017) and a lift 3e-8 m shorter.
+    /// </summary>
+    [Fact]
+    public void StepDown_OffCentre_ComputesTheRestInDoublePrecision_AsRetailsX87()
+    {
+        var t = Mover(new Vector3(0.3f, 0.2f, 1.1f), new Vector3(0.3f, 0.2f, 0.6f));
+        t.SpherePath.StepDown = true;
+        t.SpherePath.StepDownAmt = 0.5f;
+
+        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+
+        Assert.Equal(TransitionState.Adjusted, state);
+        var normal = t.CollisionInfo.ContactPlane.Normal;
+        Assert.Equal(0.3f, normal.X);
+        Assert.Equal(0.2f, normal.Y);
+        Assert.Equal(0.93273794651031494f, normal.Z);
+        Assert.Equal(0.6f + 0.33273789286613464f, CheckOrigin(t).Z);
+        Assert.Equal(0.33452421426773071f, t.SpherePath.WalkInterp);
+    }
+
     [Fact]
     public void StepDown_OntoACreature_IsIgnored()
     {

@@ -1,0 +1,182 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.Shapes;
+
+namespace AcDream.Core.Physics.Timing;
+
+/// <summary>
+/// One timed workload: a fixed sequence of frames resolved by one engine. <see cref="Run"/> resolves the
+/// whole sequence once and returns a value that depends on every frame (so nothing can be optimized away).
+/// </summary>
+internal sealed class Workload
+{
+    private readonly PhysicsEngine _engine;
+    private readonly MoverDescription _player;
+    private readonly MoverState _start;
+    private readonly Vector3 _step;
+
+    private Workload(string name, string description, PhysicsWorld world, MoverState start, Vector3 step, int frames)
+    {
+        Name = name;
+        Description = description;
+        _engine = new PhysicsEngine(world);
+        _player = MoverDescription.Player();
+        _start = start;
+        _step = step;
+        Frames = frames;
+    }
+
+    /// <summary>The short name used on the command line and in reports.</summary>
+    public string Name { get; }
+
+    /// <summary>What the workload walks.</summary>
+    public string Description { get; }
+
+    /// <summary>Transitions per run.</summary>
+    public int Frames { get; }
+
+    /// <summary>Resolves every frame once; returns the final X + Y (a data dependency on every frame).</summary>
+    public float Run()
+    {
+        var state = _start;
+        for (int i = 0; i < Frames; i++)
+        {
+            var target = state.Position;
+            target.Frame.Origin += _step;
+            state = _engine.Resolve(_player, state, target).Next;
+        }
+        return state.Position.Frame.Origin.X + state.Position.Frame.Origin.Y;
+    }
+
+    /// <summary>Blocked frames of one run (the mover did not move), for the description.</summary>
+    public int BlockedFrames()
+    {
+        var state = _start;
+        int blocked = 0;
+        for (int i = 0; i < Frames; i++)
+        {
+            var target = state.Position;
+            target.Frame.Origin += _step;
+            var next = _engine.Resolve(_player, state, target).Next;
+            if (next.Position.Frame.Origin == state.Position.Frame.Origin)
+                blocked++;
+            state = next;
+        }
+        return blocked;
+    }
+
+    // The door of the built-in "door" scene: slab front face at y = 99.991 (landblock 0xA9B4), so the
+    // player's spheres (r 0.48) touch it head-on with the centre at y = 99.511.
+    private const float FrontStop = 100f - 0.009f - 0.48f;
+
+    /// <summary>Every workload, in report order.</summary>
+    public static IReadOnlyList<Workload> All() =>
+    [
+        new("head-on", "head-on walk at 2 m/s, 30 Hz: 40 frames from 0.2 m short of the face", DoorWorld(0, 0),
+            Standing(100f, FrontStop - 0.2f), new Vector3(0, 2f / 30f, 0), 40),
+        new("slide-ne", "45° NE slide along the face: 30 frames of 0.1 m from (99.6, 99.0)", DoorWorld(0, 0),
+            Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
+        new("door", "the door transition: one frame of 0.1 m into the face from 0.05 m short", DoorWorld(0, 0),
+            Standing(100f, FrontStop - 0.05f), new Vector3(0, 0.1f, 0), 1),
+        new("door+100", "the door transition with 100 props in the door's cell (4 m or more from the door)", DoorWorld(100, 0),
+            Standing(100f, FrontStop - 0.05f), new Vector3(0, 0.1f, 0), 1),
+        new("door+1000", "the door transition with 1,000 props in the door's cell (4 m or more from the door)", DoorWorld(1000, 0),
+            Standing(100f, FrontStop - 0.05f), new Vector3(0, 0.1f, 0), 1),
+        new("slide-ne+100", "the NE slide with 100 props in the door's cell", DoorWorld(100, 0),
+            Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
+    ];
+
+    /// <summary>
+    /// A fingerprint of the engine's results: FNV-1a over every field of every frame's result on a grid of
+    /// approaches to the door (headings −85°..85° every 5°, seven lateral offsets, 1–50 m/s at 30 Hz, 60
+    /// frames each, so the fast ones run on through the props) in the door world with 100 props in the
+    /// door's cell and 300 elsewhere. Equal fingerprints: bit-identical results on all of them.
+    /// </summary>
+    public static ulong Fingerprint()
+    {
+        var engine = new PhysicsEngine(DoorWorld(100, 300));
+        var player = MoverDescription.Player();
+        ulong h = 14695981039346656037UL;
+        void Add(uint x)
+        {
+            for (int i = 0; i < 4; i++)
+            {
+                h ^= (byte)(x >> (8 * i));
+                h *= 1099511628211UL;
+            }
+        }
+        void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
+        void AddV(Vector3 v) { AddF(v.X); AddF(v.Y); AddF(v.Z); }
+        foreach (float lateral in new[] { -0.7f, -0.45f, -0.2f, 0f, 0.2f, 0.45f, 0.7f })
+            for (int heading = -85; heading <= 85; heading += 5)
+                foreach (float speed in new[] { 1f, 2f, 5f, 10f, 20f, 50f })
+                {
+                    float a = heading * MathF.PI / 180f;
+                    var dir = new Vector3(MathF.Sin(a), MathF.Cos(a), 0);
+                    var state = Standing(100f + lateral - 2f * dir.X, FrontStop - 2f * dir.Y);
+                    var step = dir * (speed / 30f);
+                    for (int f = 0; f < 60; f++)
+                    {
+                        var target = state.Position;
+                        target.Frame.Origin += step;
+                        var r = engine.Resolve(player, state, target);
+                        var n = r.Next;
+                        Add(n.Position.CellId);
+                        AddV(n.Position.Frame.Origin);
+                        AddF(n.Position.Frame.Orientation.W);
+                        AddF(n.Position.Frame.Orientation.Z);
+                        Add((uint)((r.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
+                            | (r.CollisionNormalValid ? 16 : 0) | (r.CollidedWithEnvironment ? 32 : 0) | (r.VelocityKilled ? 64 : 0)));
+                        AddV(n.ContactPlane.Normal);
+                        AddF(n.ContactPlane.D);
+                        Add(n.ContactPlaneCellId);
+                        AddV(n.SlidingNormal);
+                        AddV(r.CollisionNormal);
+                        Add(r.LastCollidedObject);
+                        foreach (uint id in r.CollidedObjects.Span)
+                            Add(id);
+                        state = n;
+                    }
+                }
+        return h;
+    }
+
+    private static MoverState Standing(float x, float y)
+    {
+        var p = new Vector3(x, y, 0);
+        return MoverState.OnFloor(new Position(LandDefs.LandCellAt(0xA9B4, p), p), 0f);
+    }
+
+    /// <summary>
+    /// The built-in door scene's world (flat landblock 0xA9B4, the door at (100, 100, 0)) with props:
+    /// <paramref name="near"/> in the door's 24 m cell at least 4 m from the door, <paramref name="far"/>
+    /// in other cells. Props alternate between a barrel (a cylinder) and a rock (a sphere); fixed seed.
+    /// </summary>
+    private static PhysicsWorld DoorWorld(int near, int far)
+    {
+        var world = SceneLibrary.Load("door").World;
+        var rng = new Random(1234);
+        var barrel = new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.4f, 1.0f)], Height = 1f, Radius = 0.4f };
+        var rock = new PhysicsSetup { Spheres = [new Sphere(new Vector3(0, 0, 0.3f), 0.3f)], Height = 0.6f, Radius = 0.3f };
+        for (int i = 0; i < near + far; i++)
+        {
+            Vector3 p;
+            if (i < near)
+            {
+                do p = new Vector3(97 + 22 * rng.NextSingle(), 97 + 22 * rng.NextSingle(), 0);
+                while (Vector2.Distance(new Vector2(p.X, p.Y), new Vector2(100, 100)) < 4f);
+            }
+            else
+            {
+                do p = new Vector3(1 + 190 * rng.NextSingle(), 1 + 190 * rng.NextSingle(), 0);
+                while (p.X > 94 && p.X < 122 && p.Y > 94 && p.Y < 122);
+            }
+            world.Objects.Register(0x7100_0000u + (uint)i, (i & 1) == 0 ? barrel : rock,
+                new Position(LandDefs.LandCellAt(0xA9B4, p), p), 1f, PhysicsState.ReportCollisions);
+        }
+        return world;
+    }
+}

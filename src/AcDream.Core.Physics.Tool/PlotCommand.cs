@@ -1,0 +1,257 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Scenes;
+using ScottPlot;
+
+namespace AcDream.Core.Physics.Tool;
+
+/// <summary>
+/// <c>plot SCENE [TRAJ] --out FILE.png</c>: a top view and a side view (along the main direction of motion)
+/// of the scene's indoor cells, buildings and objects, with each mover's path, its frames coloured by
+/// outcome and its collision normals drawn where they changed. Without TRAJ the scene is run first.
+/// Coordinates are landblock-local to the scene's first cell's landblock.
+/// </summary>
+internal static class PlotCommand
+{
+    /// <summary>The drawn length of a collision normal, metres.</summary>
+    private const double NormalLength = 0.5;
+
+    private static readonly Color CellColor = Color.FromHex("#555555");
+    private static readonly Color BuildingColor = Color.FromHex("#8B5A2B");
+    private static readonly Color ObjectColor = Color.FromHex("#1F5FBF");
+    private static readonly Color PathColor = Color.FromHex("#BBBBBB");
+    private static readonly Color NormalColor = Color.FromHex("#D62728");
+
+    /// <summary>The colour of each outcome, in <see cref="FrameOutcome"/> order.</summary>
+    private static readonly Color[] OutcomeColors =
+        [Color.FromHex("#2CA02C"), Color.FromHex("#FF7F0E"), Color.FromHex("#9467BD"), Color.FromHex("#D62728"), Color.FromHex("#17BECF")];
+
+    public static int Run(Scene scene, Trajectory? trajectory, string outPath, TextWriter stdout)
+    {
+        trajectory ??= SceneRunner.Run(scene);
+        uint frameCell = scene.World.Cells.CellIds.FirstOrDefault();
+        var paths = Paths(scene, trajectory, frameCell);
+        var (min, max) = Region(paths);
+        bool alongX = MainAxisIsX(paths);
+
+        var multiplot = new Multiplot();
+        multiplot.AddPlots(2);
+        multiplot.Layout = new ScottPlot.MultiplotLayouts.Columns();
+        var top = multiplot.GetPlot(0);
+        var side = multiplot.GetPlot(1);
+        DrawWorld(scene.World, frameCell, min, max, top, side, alongX);
+        int[] counts = DrawPaths(paths, top, side, alongX);
+
+        top.Title($"{scene.Name}: top view");
+        top.XLabel("x (m)");
+        top.YLabel("y (m)");
+        side.Title($"{scene.Name}: side view along {(alongX ? "x" : "y")}");
+        side.XLabel($"{(alongX ? "x" : "y")} (m)");
+        side.YLabel("z (m)");
+        foreach (var plot in new[] { top, side })
+        {
+            plot.Axes.SquareUnits();
+            plot.Legend.Alignment = Alignment.UpperLeft;
+        }
+        top.Axes.SetLimits(min.X, max.X, min.Y, max.Y);
+        side.Axes.SetLimits(alongX ? min.X : min.Y, alongX ? max.X : max.Y, min.Z, max.Z);
+        top.ShowLegend();
+        multiplot.SavePng(outPath, 1600, 800);
+        stdout.WriteLine($"{scene.Name}: {paths.Count} movers, {counts.Sum()} frames ({Describe(counts)}); plot written to {outPath}");
+        return 0;
+    }
+
+    private sealed record MoverPath(string Name, Vector3 Start, IReadOnlyList<TrajectoryFrame> Frames, Vector3[] Points);
+
+    /// <summary>Each mover's start and frame positions in the plot's frame.</summary>
+    private static List<MoverPath> Paths(Scene scene, Trajectory trajectory, uint frameCell)
+    {
+        var list = new List<MoverPath>();
+        foreach (var mover in trajectory.Movers)
+        {
+            var sceneMover = scene.Movers.FirstOrDefault(m => m.Name == mover.Name);
+            var points = mover.Frames.Select(f => f.Position + LandDefs.BlockOffset(frameCell, f.Cell)).ToArray();
+            var start = sceneMover is null
+                ? (points.Length > 0 ? points[0] : Vector3.Zero)
+                : sceneMover.Start.Position.Origin + LandDefs.BlockOffset(frameCell, sceneMover.Start.Position.CellId);
+            list.Add(new MoverPath(mover.Name, start, mover.Frames, points));
+        }
+        return list;
+    }
+
+    /// <summary>The box around every path, 3 m of margin sideways and 1 m up and down (at least 0 to 4 m high).</summary>
+    private static (Vector3 Min, Vector3 Max) Region(List<MoverPath> paths)
+    {
+        var min = new Vector3(float.MaxValue);
+        var max = new Vector3(float.MinValue);
+        foreach (var p in paths)
+            foreach (var v in p.Points.Prepend(p.Start))
+            {
+                min = Vector3.Min(min, v);
+                max = Vector3.Max(max, v);
+            }
+        if (min.X > max.X)
+            return (new Vector3(0, 0, -1), new Vector3(10, 10, 4));
+        min -= new Vector3(3, 3, 1);
+        max += new Vector3(3, 3, 1);
+        return (new Vector3(min.X, min.Y, MathF.Min(min.Z, 0f)), new Vector3(max.X, max.Y, MathF.Max(max.Z, 4f)));
+    }
+
+    private static bool MainAxisIsX(List<MoverPath> paths)
+    {
+        float dx = 0, dy = 0;
+        foreach (var p in paths)
+        {
+            var previous = p.Start;
+            foreach (var v in p.Points)
+            {
+                dx += MathF.Abs(v.X - previous.X);
+                dy += MathF.Abs(v.Y - previous.Y);
+                previous = v;
+            }
+        }
+        return dx > dy;
+    }
+
+    private static void DrawWorld(PhysicsWorld world, uint frameCell, Vector3 min, Vector3 max, Plot top, Plot side, bool alongX)
+    {
+        // Land-cell borders inside the region, and the ground level when there is terrain.
+        const float size = PhysicsConstants.LandCellLength;
+        for (float x = MathF.Ceiling(min.X / size) * size; x <= max.X; x += size)
+            top.Add.VerticalLine(x, 1, Colors.LightGray, LinePattern.Dotted);
+        for (float y = MathF.Ceiling(min.Y / size) * size; y <= max.Y; y += size)
+            top.Add.HorizontalLine(y, 1, Colors.LightGray, LinePattern.Dotted);
+        if (world.Cells.CellIds.Any(LandDefs.IsLandCell))
+            side.Add.HorizontalLine(0, 1, Colors.LightGray, LinePattern.Dotted);
+
+        foreach (var shape in WorldOutline.Collect(world, frameCell))
+        {
+            var color = shape.Source switch { OutlineSource.EnvCell => CellColor, OutlineSource.Building => BuildingColor, _ => ObjectColor };
+            // An object's shape that its dispatch rung never collides with (a door's foot cylinder) is dashed.
+            var pattern = shape.Collides ? LinePattern.Solid : LinePattern.Dashed;
+            switch (shape.Form)
+            {
+                case OutlineForm.Polygon:
+                    DrawPolygon(shape.Vertices, color, pattern, top, side, alongX, min, max);
+                    break;
+                case OutlineForm.Cylinder:
+                    var low = shape.Center;
+                    double h = alongX ? low.X : low.Y;
+                    Outline(top.Add.Circle(low.X, low.Y, shape.Radius), color, pattern);
+                    Outline(side.Add.Rectangle(h - shape.Radius, h + shape.Radius, low.Z, low.Z + shape.Height), color, pattern);
+                    break;
+                default:
+                    var c = shape.Center;
+                    Outline(top.Add.Circle(c.X, c.Y, shape.Radius), color, pattern);
+                    Outline(side.Add.Circle(alongX ? c.X : c.Y, c.Z, shape.Radius), color, pattern);
+                    break;
+            }
+        }
+    }
+
+    private static void Outline(IHasLine shape, Color color, LinePattern pattern)
+    {
+        shape.LineColor = color;
+        shape.LineWidth = 1.5f;
+        shape.LinePattern = pattern;
+        if (shape is IHasFill fill)
+            fill.FillColor = Colors.Transparent;
+    }
+
+    /// <summary>A polygon's outline in both views (left out when it lies wholly outside the region).</summary>
+    private static void DrawPolygon(ReadOnlySpan<Vector3> v, Color color, LinePattern pattern, Plot top, Plot side, bool alongX, Vector3 min, Vector3 max)
+    {
+        var xs = new double[v.Length + 1];
+        var ys = new double[v.Length + 1];
+        var hs = new double[v.Length + 1];
+        var zs = new double[v.Length + 1];
+        bool inside = false;
+        for (int i = 0; i <= v.Length; i++)
+        {
+            var p = v[i % v.Length];
+            (xs[i], ys[i], zs[i]) = (p.X, p.Y, p.Z);
+            hs[i] = alongX ? p.X : p.Y;
+            inside |= p.X >= min.X && p.X <= max.X && p.Y >= min.Y && p.Y <= max.Y;
+        }
+        if (!inside)
+            return;
+        Line(top.Add.Scatter(xs, ys), color, pattern);
+        Line(side.Add.Scatter(hs, zs), color, pattern);
+    }
+
+    private static void Line(ScottPlot.Plottables.Scatter s, Color color, LinePattern pattern)
+    {
+        s.Color = color;
+        s.LineWidth = 1.5f;
+        s.MarkerSize = 0;
+        s.LinePattern = pattern;
+    }
+
+    /// <summary>The paths, one marker per frame in its outcome's colour, and each changed collision normal; returns the frame count per outcome.</summary>
+    private static int[] DrawPaths(List<MoverPath> paths, Plot top, Plot side, bool alongX)
+    {
+        int outcomes = Enum.GetValues<FrameOutcome>().Length;
+        var xs = new List<double>[outcomes];
+        var ys = new List<double>[outcomes];
+        var hs = new List<double>[outcomes];
+        var zs = new List<double>[outcomes];
+        for (int k = 0; k < outcomes; k++)
+            (xs[k], ys[k], hs[k], zs[k]) = (new(), new(), new(), new());
+        foreach (var p in paths)
+        {
+            var all = p.Points.Prepend(p.Start).ToArray();
+            var path = top.Add.Scatter(all.Select(v => (double)v.X).ToArray(), all.Select(v => (double)v.Y).ToArray());
+            Line(path, PathColor, LinePattern.Solid);
+            var sidePath = side.Add.Scatter(all.Select(v => (double)(alongX ? v.X : v.Y)).ToArray(), all.Select(v => (double)v.Z).ToArray());
+            Line(sidePath, PathColor, LinePattern.Solid);
+            var previous = p.Start;
+            Vector3? lastNormal = null;
+            for (int f = 0; f < p.Frames.Count; f++)
+            {
+                var frame = p.Frames[f];
+                var at = p.Points[f];
+                int k = (int)FrameOutcomes.Of(frame, previous);
+                xs[k].Add(at.X); ys[k].Add(at.Y); hs[k].Add(alongX ? at.X : at.Y); zs[k].Add(at.Z);
+                if (frame.CollisionNormalValid && (lastNormal is not { } n || Vector3.DistanceSquared(n, frame.CollisionNormal) > 1e-6f))
+                {
+                    var tip = at + frame.CollisionNormal * (float)NormalLength;
+                    Arrow(top.Add.Arrow(new Coordinates(at.X, at.Y), new Coordinates(tip.X, tip.Y)));
+                    Arrow(side.Add.Arrow(new Coordinates(alongX ? at.X : at.Y, at.Z), new Coordinates(alongX ? tip.X : tip.Y, tip.Z)));
+                    lastNormal = frame.CollisionNormal;
+                }
+                previous = at;
+            }
+        }
+        var counts = new int[outcomes];
+        for (int k = 0; k < outcomes; k++)
+        {
+            counts[k] = xs[k].Count;
+            var color = OutcomeColors[k];
+            var name = ((FrameOutcome)k).ToString().ToLowerInvariant();
+            var markers = top.Add.Markers(xs[k].ToArray(), ys[k].ToArray(), MarkerShape.FilledCircle, 5, color);
+            markers.LegendText = $"{name} ({counts[k]})";
+            side.Add.Markers(hs[k].ToArray(), zs[k].ToArray(), MarkerShape.FilledCircle, 5, color);
+        }
+        var normalKey = top.Add.Markers(Array.Empty<double>(), Array.Empty<double>(), MarkerShape.FilledTriangleUp, 6, NormalColor);
+        normalKey.LegendText = "collision normal (where it changed)";
+        return counts;
+    }
+
+    private static void Arrow(ScottPlot.Plottables.Arrow arrow)
+    {
+        arrow.ArrowLineColor = NormalColor;
+        arrow.ArrowFillColor = NormalColor;
+        arrow.ArrowLineWidth = 0;
+        arrow.ArrowWidth = 1.5f;
+        arrow.ArrowheadWidth = 7;
+        arrow.ArrowheadLength = 9;
+        arrow.ArrowheadAxisLength = 9;
+    }
+
+    private static string Describe(int[] counts) =>
+        string.Join(", ", counts.Select((c, k) => $"{c} {((FrameOutcome)k).ToString().ToLowerInvariant()}"));
+}

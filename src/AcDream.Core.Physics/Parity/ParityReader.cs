@@ -1,0 +1,311 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.IO.Compression;
+using System.Numerics;
+using System.Text.Json;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Parity;
+
+/// <summary>
+/// Reads a parity file (gzip JSON) into a <see cref="ParitySet"/>. Two formats:
+/// "ace-oracle-trajectories" (ACE's results on a built-in scene: the header's <c>scene</c> supplies the
+/// objects' setups, its <c>objects</c> their position, rotation and state; flat landblock; the retail
+/// player walks approaches from the floor) and "ace-parity-real" (real cells: the header names a scene
+/// file in <c>scenes/</c> beside the file; each mover starts in the full state its <c>start</c> gives,
+/// read by the scene format's start-state reader). Errors are <see cref="SceneFormatException"/>s naming
+/// the JSON path. Load-time only; allocates freely.
+/// </summary>
+internal static class ParityReader
+{
+    /// <summary>The format of ACE's results on the built-in scenes.</summary>
+    public const string AceFormat = "ace-oracle-trajectories";
+
+    /// <summary>The format of the real-cell files.</summary>
+    public const string RealCellsFormat = "ace-parity-real";
+
+    /// <summary>The ACE file whose every frame must match to the last bit.</summary>
+    public const string BitIdenticalFile = "door.json.gz";
+
+    /// <summary>Reads a file; a scene it names is looked up in <c>scenes/</c> beside it.</summary>
+    public static ParitySet ReadFile(string path)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        using var file = File.OpenRead(path);
+        using var gzip = new GZipStream(file, CompressionMode.Decompress);
+        JsonDocument doc;
+        try
+        {
+            doc = JsonDocument.Parse(gzip, JsonRead.Options);
+        }
+        catch (JsonException ex)
+        {
+            throw new SceneFormatException(string.Empty, $"invalid JSON at line {(ex.LineNumber ?? 0) + 1}: {FirstSentence(ex.Message)}", ex);
+        }
+        catch (InvalidDataException ex)
+        {
+            throw new SceneFormatException(string.Empty, $"not a gzip file: {ex.Message}", ex);
+        }
+        using (doc)
+            return Read(doc.RootElement, Path.GetFileName(path), Path.GetDirectoryName(Path.GetFullPath(path))!);
+    }
+
+    /// <summary>Reads a parsed file named <paramref name="name"/> whose scenes live under <paramref name="directory"/>/scenes.</summary>
+    public static ParitySet Read(JsonElement root, string name, string directory)
+    {
+        var o = new JsonObj(root, string.Empty);
+        string format = o.String("format");
+        int version = o.Int("version", -1);
+        if (format is not (AceFormat or RealCellsFormat))
+            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}).");
+        if (version != 1)
+            throw new SceneFormatException("version", $"unsupported {format} version {version} (this reader reads version 1).");
+        return format == AceFormat
+            ? ReadAce(o, name)
+            : ReadReal(o, name, directory);
+    }
+
+    private static string FirstSentence(string message)
+    {
+        int cut = message.IndexOf(" LineNumber:", StringComparison.Ordinal);
+        return cut > 0 ? message[..cut].TrimEnd() : message;
+    }
+
+    // ---- ACE on a built-in scene ----
+
+    private static ParitySet ReadAce(JsonObj o, string name)
+    {
+        string sceneName = o.String("scene");
+        if (!SceneLibrary.Contains(sceneName))
+            throw new SceneFormatException("scene", $"unknown built-in scene \"{sceneName}\" (built-in: {string.Join(", ", SceneLibrary.Names)}).");
+        var scene = SceneLibrary.Load(sceneName);
+        var world = scene.World;
+        uint landblock = o.Id("landblock");
+        foreach (var (value, path) in o.Array("objects"))
+            PlaceObject(world, value, path, sceneName, landblock);
+
+        var player = o.Obj("player");
+        var mover = ReadPlayer(player);
+        var runs = new List<ParityRun>();
+        foreach (var (value, path) in o.Array("approaches"))
+        {
+            var a = new JsonObj(value, path);
+            string runName = $"{a.String("side", "?")} heading {Number(a, "heading")} lateral {Number(a, "lateral")} speed {Number(a, "speed")} {Number(a, "hz")} Hz";
+            var start = a.Vec3("start");
+            var offset = a.Vec3("offset");
+            uint cell = LandDefs.LandCellAt(landblock, start);
+            if (cell == 0 || world.Cells.Get(cell) is null)
+                throw new SceneFormatException(a.Child("start"), $"{start} is not in landblock 0x{landblock:X4} of scene \"{sceneName}\".");
+            var state = MoverState.OnFloor(new Position(cell, start), 0f);
+            var frames = ReadFrames(a.Req("frames"), a.Child("frames"), offset, contactPlane: false);
+            runs.Add(new ParityRun(runName, mover, state, frames));
+        }
+        if (runs.Count == 0)
+            throw new SceneFormatException("approaches", "a parity file needs at least one approach.");
+        return new ParitySet(name, world, runs, string.Equals(name, BitIdenticalFile, StringComparison.Ordinal));
+    }
+
+    private static string Number(JsonObj o, string field) => o.Opt(field) is { } v ? v.GetRawText() : "?";
+
+    // The header's rule: the built-in scene supplies the object's shapes; position, rotation and state come from here.
+    private static void PlaceObject(PhysicsWorld world, JsonElement e, string path, string sceneName, uint landblock)
+    {
+        var o = new JsonObj(e, path);
+        uint id = o.Id("id");
+        var position = o.Vec3("position");
+        var rotation = o.Rotation("rotation");
+        var state = JsonRead.Flags<PhysicsState>(o.Req("state"), o.Child("state"));
+        if (!world.Objects.Contains(id))
+            throw new SceneFormatException(o.Child("id"), $"object 0x{id:X8} is not in built-in scene \"{sceneName}\".");
+        uint cell = LandDefs.LandCellAt(landblock, position);
+        if (cell == 0)
+            throw new SceneFormatException(o.Child("position"), $"{position} is outside landblock 0x{landblock:X4}.");
+        try
+        {
+            world.Objects.Replace(id, new Position(cell, new Frame(position, rotation)), state);
+        }
+        catch (ArgumentException ex)
+        {
+            throw SceneFormatException.Wrap(path, ex);
+        }
+    }
+
+    private static MoverDescription ReadPlayer(JsonObj p)
+    {
+        uint id = p.Id("id");
+        var items = p.Array("spheres");
+        if (items.Count is < 1 or > 2)
+            throw new SceneFormatException(p.Child("spheres"), $"a mover has one or two spheres, got {items.Count}.");
+        var spheres = new Sphere[items.Count];
+        for (int i = 0; i < items.Count; i++)
+        {
+            var v = FloatArray(items[i].Value, items[i].Path, 4, "a sphere [x, y, z, r]");
+            spheres[i] = new Sphere(new Vector3(v[0], v[1], v[2]), v[3]);
+        }
+        float stepUp = p.Float("stepUp");
+        float stepDown = p.Float("stepDown");
+        var state = NamedFlags<PhysicsState>(p.Req("state"), p.Child("state"));
+        var info = p.Bool("isPlayer", false) ? ObjectInfoState.IsPlayer : ObjectInfoState.None;
+        try
+        {
+            return new MoverDescription(id, spheres, stepUp, stepDown, state, info);
+        }
+        catch (ArgumentException ex)
+        {
+            throw SceneFormatException.Wrap("player", ex);
+        }
+    }
+
+    // "Gravity|EdgeSlide" or "Gravity, EdgeSlide" or a hex string.
+    private static TEnum NamedFlags<TEnum>(JsonElement e, string path) where TEnum : struct, Enum
+    {
+        string text = JsonRead.String(e, path);
+        if (text.StartsWith("0x", StringComparison.OrdinalIgnoreCase))
+            return JsonRead.Flags<TEnum>(e, path);
+        ulong bits = 0;
+        foreach (string part in text.Split(['|', ','], StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
+        {
+            if (!Enum.TryParse<TEnum>(part, ignoreCase: false, out var flag) || !Enum.IsDefined(flag) || int.TryParse(part, out _))
+                throw new SceneFormatException(path, $"unknown {typeof(TEnum).Name} flag \"{part}\".");
+            bits |= Convert.ToUInt64(flag, System.Globalization.CultureInfo.InvariantCulture);
+        }
+        return (TEnum)Enum.ToObject(typeof(TEnum), bits);
+    }
+
+    // ---- real cells ----
+
+    private static ParitySet ReadReal(JsonObj o, string name, string directory)
+    {
+        string sceneFile = o.String("scene");
+        if (sceneFile.Contains('/') || sceneFile.Contains('\\') || sceneFile.Contains(".."))
+            throw new SceneFormatException("scene", $"must be a file name in scenes/, got \"{sceneFile}\".");
+        string scenePath = Path.Combine(directory, "scenes", sceneFile);
+        if (!File.Exists(scenePath))
+            throw new SceneFormatException("scene", $"scenes/{sceneFile} does not exist beside the file.");
+        string text = File.ReadAllText(scenePath);
+        if (o.String("sceneSha256", null) is { } sha && !string.Equals(sha, SceneLoader.Sha256Of(text), StringComparison.OrdinalIgnoreCase))
+            throw new SceneFormatException("sceneSha256", $"scenes/{sceneFile} has changed (its SHA-256 is {SceneLoader.Sha256Of(text)}).");
+        Scene scene;
+        try
+        {
+            scene = SceneLoader.Load(text, Path.GetFileNameWithoutExtension(sceneFile));
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException($"scene (scenes/{sceneFile}) {ex.JsonPath}".TrimEnd(), ex.Detail, ex);
+        }
+        var byName = new Dictionary<string, SceneMover>(StringComparer.Ordinal);
+        foreach (var m in scene.Movers)
+            byName[m.Name] = m;
+
+        var runs = new List<ParityRun>();
+        foreach (var (value, path) in o.Array("movers"))
+        {
+            var m = new JsonObj(value, path);
+            string moverName = m.String("name");
+            if (m.Has("excluded"))
+                continue; // The file keeps only part of an excluded mover's frames (it leaves the loaded world).
+            if (!byName.TryGetValue(moverName, out var sceneMover))
+                throw new SceneFormatException(m.Child("name"), $"scene \"{sceneFile}\" has no mover \"{moverName}\".");
+            var start = StartStateReader.Read(m.Req("start"), m.Child("start"), scene.World);
+            var frames = ReadFrames(m.Req("frames"), m.Child("frames"), offset: null, contactPlane: true);
+            runs.Add(new ParityRun(moverName, sceneMover.Description, start, frames));
+        }
+        if (runs.Count == 0)
+            throw new SceneFormatException("movers", "a parity file needs at least one mover that is not excluded.");
+        return new ParitySet(name, scene.World, runs, RequireBitIdentical: false);
+    }
+
+    // ---- frames ----
+
+    // Frames are many (about 50,000 per ACE file), so they are read field by field without JsonObj;
+    // paths are built only for an error.
+    private static ParityFrame[] ReadFrames(JsonElement e, string path, Vector3? offset, bool contactPlane)
+    {
+        if (e.ValueKind != JsonValueKind.Array)
+            throw new SceneFormatException(path, $"expected an array, got {JsonRead.Kind(e)}.");
+        var frames = new ParityFrame[e.GetArrayLength()];
+        if (frames.Length == 0)
+            throw new SceneFormatException(path, "needs at least one frame.");
+        if (frames.Length > SceneLoader.MaxFramesPerMover)
+            throw new SceneFormatException(path, $"at most {SceneLoader.MaxFramesPerMover} frames.");
+        int i = 0;
+        foreach (var f in e.EnumerateArray())
+        {
+            string at = $"{path}[{i}]";
+            if (f.ValueKind != JsonValueKind.Object)
+                throw new SceneFormatException(at, $"expected an object, got {JsonRead.Kind(f)}.");
+            var frameOffset = offset ?? JsonRead.Vec3(Req(f, at, "offset"), at + ".offset");
+            bool contact = Bit(f, at, "c");
+            bool hasPlane = false;
+            Plane plane = default;
+            uint planeCell = 0;
+            if (contactPlane && contact)
+            {
+                var cp = FloatArray(Req(f, at, "cp"), at + ".cp", 4, "a plane [nx, ny, nz, d]");
+                plane = new Plane(cp[0], cp[1], cp[2], cp[3]);
+                planeCell = JsonRead.Id(Req(f, at, "cpCell"), at + ".cpCell");
+                hasPlane = true;
+            }
+            frames[i] = new ParityFrame(
+                frameOffset,
+                JsonRead.Vec3(Req(f, at, "pos"), at + ".pos"),
+                JsonRead.Id(Req(f, at, "cell"), at + ".cell"),
+                contact,
+                Bit(f, at, "w"),
+                Sliding(f, at),
+                Bit(f, at, "ok"),
+                Hits(f, at),
+                hasPlane,
+                plane,
+                planeCell);
+            i++;
+        }
+        return frames;
+    }
+
+    // The sliding normal is written only while sliding; only its presence is compared, but it must be a vector.
+    private static bool Sliding(JsonElement f, string at)
+    {
+        if (!f.TryGetProperty("sl", out var sl) || sl.ValueKind == JsonValueKind.Null)
+            return false;
+        JsonRead.Vec3(sl, at + ".sl");
+        return true;
+    }
+
+    private static JsonElement Req(JsonElement f, string at, string name) =>
+        f.TryGetProperty(name, out var v) && v.ValueKind != JsonValueKind.Null ? v : throw new SceneFormatException($"{at}.{name}", "is required.");
+
+    private static bool Bit(JsonElement f, string at, string name)
+    {
+        var v = Req(f, at, name);
+        if (v.ValueKind == JsonValueKind.Number && v.TryGetInt32(out int n) && n is 0 or 1)
+            return n == 1;
+        throw new SceneFormatException($"{at}.{name}", $"expected 0 or 1, got {JsonRead.Kind(v)}.");
+    }
+
+    private static uint[] Hits(JsonElement f, string at)
+    {
+        if (!f.TryGetProperty("hit", out var h) || h.ValueKind == JsonValueKind.Null)
+            return [];
+        var items = JsonRead.Array(h, at + ".hit");
+        var ids = new uint[items.Count];
+        for (int i = 0; i < ids.Length; i++)
+            ids[i] = JsonRead.Id(items[i].Value, items[i].Path);
+        return ids;
+    }
+
+    private static float[] FloatArray(JsonElement e, string path, int count, string what)
+    {
+        var items = JsonRead.Array(e, path);
+        if (items.Count != count)
+            throw new SceneFormatException(path, $"{what} needs {count} numbers, got {items.Count}.");
+        var values = new float[count];
+        for (int i = 0; i < count; i++)
+            values[i] = JsonRead.Float(items[i].Value, items[i].Path);
+        return values;
+    }
+}

@@ -1,0 +1,201 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Validation;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsEngine
+{
+    private uint[] _stepCollided = new uint[8];
+
+    /// <summary>
+    /// Advances a body by <paramref name="elapsed"/> seconds the retail way (CPhysicsObj::update_object): the
+    /// time is gathered until 1/30 s has passed (<see cref="PhysicsConstants.MinQuantum"/>), dropped when longer
+    /// than <see cref="PhysicsConstants.HugeQuantum"/>, else stepped whole or in quanta of at most
+    /// <see cref="PhysicsConstants.MaxQuantum"/>. Each quantum moves the body by the desired motion (while it
+    /// stands on walkable ground) plus its velocity and acceleration (gravity when not standing on walkable
+    /// ground; friction on it), through the same transition as <see cref="Resolve"/>; the outcome lands or
+    /// lifts the body, reflects its velocity off what it hit by its elasticity, or zeroes it.
+    /// </summary>
+    /// <param name="mover">What the mover is (its PhysicsState decides Gravity, Sledding, Inelastic, Hidden, Frozen).</param>
+    /// <param name="state">Where it is and how it stands.</param>
+    /// <param name="body">Its velocity, spin, friction, elasticity and carried time.</param>
+    /// <param name="elapsed">Seconds since the last call, zero or more.</param>
+    /// <param name="desiredVelocity">
+    /// The motion the client's input asks for, world axes, m/s (retail's animation root motion): it moves the
+    /// body only while it stands on walkable ground, and becomes its velocity when it leaves the ground (for a
+    /// body with a <see cref="BodyState.MotionInterpreter"/>).
+    /// </param>
+    /// <param name="jumpVelocity">
+    /// 0 for no jump, else the jump's vertical speed, m/s (retail get_jump_v_z): taken when the body has a
+    /// motion interpreter and stands on walkable ground (jump_is_allowed); it leaves the ground with the desired
+    /// motion's horizontal part and this vertical speed.
+    /// </param>
+    /// <exception cref="ArgumentException">A non-finite, negative or out-of-range argument, named in the message; nothing is changed.</exception>
+    public BodyStepResult Step(MoverDescription mover, in MoverState state, in BodyState body, double elapsed, Vector3 desiredVelocity,
+        float jumpVelocity = 0f)
+    {
+        ArgumentNullException.ThrowIfNull(mover);
+        var begin = state.Position;
+        Guard.Pose(ref begin.Frame, "state.position");
+        ValidateState(mover, state, begin, begin.CellId);
+        BodyGuard.Check(body, elapsed, desiredVelocity, jumpVelocity);
+
+        var s = state;
+        var b = body;
+        var ps = mover.PhysicsState;
+        bool gravity = (ps & PhysicsState.Gravity) != 0;
+
+        // CMotionInterp::jump: allowed from walkable ground (or without gravity); set_on_walkable(0) then calls
+        // LeaveGround, which sets the leave-ground velocity, only when the body was on walkable ground.
+        bool jumped = false;
+        if (jumpVelocity > 0f && b.MotionInterpreter && (!gravity || (s.Contact && s.OnWalkable)))
+        {
+            jumped = true;
+            if (s.OnWalkable && gravity)
+                b.Velocity = BodyMotion.LeaveGroundVelocity(b.Velocity, desiredVelocity, jumpVelocity);
+            s.OnWalkable = false;
+        }
+        // Retail recomputes the acceleration whenever the contact state or the Gravity state changes.
+        b.Acceleration = BodyMotion.Acceleration(ps, s.Contact, s.OnWalkable);
+
+        int collided = 0;
+        var last = new QuantumOutcome();
+        int quanta = 0;
+        if ((ps & PhysicsState.Frozen) != 0)
+        {
+            b.PendingTime = 0;
+            return Unmoved(s, b, jumped);
+        }
+        double pending = b.PendingTime + elapsed;
+        if (pending < PhysicsConstants.MinQuantum)
+        {
+            // CPhysics::UseTime: no object is updated before 1/30 s has passed.
+            b.PendingTime = pending;
+            return Unmoved(s, b, jumped);
+        }
+        if (pending > PhysicsConstants.HugeQuantum)
+        {
+            b.PendingTime = 0;
+            return Unmoved(s, b, jumped);
+        }
+        if (pending <= PhysicsConstants.MaxQuantum)
+        {
+            Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last, ref collided);
+            quanta = 1;
+            pending = 0;
+        }
+        else
+        {
+            do
+            {
+                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, ref last, ref collided);
+                quanta++;
+                pending -= PhysicsConstants.MaxQuantum;
+            }
+            while (pending > PhysicsConstants.MaxQuantum);
+            if (pending > PhysicsConstants.MinQuantum)
+            {
+                Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last, ref collided);
+                quanta++;
+                pending = 0;
+            }
+        }
+        b.PendingTime = pending;
+        var move = new MoveResult(!last.Refused, s, last.Refused ? TransitionState.Collided : TransitionState.OK, last.CollisionNormalValid,
+            last.CollisionNormal, last.Environment, new ReadOnlyMemory<uint>(_stepCollided, 0, collided), last.LastCollided, last.VelocityKilled);
+        return new BodyStepResult(move, b, quanta, jumped);
+    }
+
+    private static BodyStepResult Unmoved(in MoverState s, in BodyState b, bool jumped) =>
+        new(new MoveResult(true, s, TransitionState.OK, false, default, false, ReadOnlyMemory<uint>.Empty, 0), b, 0, jumped);
+
+    /// <summary>What the quanta of one step touched, gathered for the step's <see cref="MoveResult"/>.</summary>
+    private struct QuantumOutcome
+    {
+        public bool Refused, CollisionNormalValid, Environment, VelocityKilled;
+        public Vector3 CollisionNormal;
+        public uint LastCollided;
+    }
+
+    /// <summary>One quantum: retail UpdateObjectInternal → UpdatePositionInternal → transition → SetPositionInternal.</summary>
+    private void Quantum(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
+        ref QuantumOutcome outcome, ref int collided)
+    {
+        var ps = mover.PhysicsState;
+        var begin = s.Position;
+        var frame = begin.Frame;
+        if ((ps & PhysicsState.Hidden) == 0)
+        {
+            // UpdatePositionInternal: the animation's root motion counts only on walkable ground (scaled by 0 off it).
+            var offset = s.OnWalkable ? desiredVelocity * quantum : Vector3.Zero;
+            var velocity = b.Velocity;
+            offset += BodyMotion.Integrate(ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
+            b.Velocity = velocity;
+            frame.Origin += offset;
+            frame.Orientation = BodyMotion.Rotate(frame.Orientation, b.Omega * quantum);
+        }
+        // UpdateObjectInternal: an origin unchanged within EPSILON on every axis runs no transition (only the turn is kept).
+        var d = frame.Origin - begin.Frame.Origin;
+        const float e = PhysicsConstants.Epsilon;
+        if (MathF.Abs(d.X) <= e && MathF.Abs(d.Y) <= e && MathF.Abs(d.Z) <= e)
+        {
+            s.Position.Frame.Orientation = frame.Orientation;
+            return;
+        }
+
+        // get_object_info: a body moving away from its contact plane faster than EPSILON is not in contact (check_contact).
+        var seeded = s;
+        if (s.Contact && Vector3.Dot(b.Velocity, s.ContactPlane.Normal) > PhysicsConstants.Epsilon)
+        {
+            seeded.Contact = false;
+            seeded.OnWalkable = false;
+        }
+        var result = ResolveCore(mover, seeded, new Position(begin.CellId, frame), b.StationaryFall);
+        var span = result.CollidedObjects.Span;
+        for (int i = 0; i < span.Length; i++)
+            AddStepCollided(span[i], ref collided);
+        if (result.CollidedWithEnvironment) outcome.Environment = true;
+        if (result.VelocityKilled) outcome.VelocityKilled = true;
+        if (result.LastCollidedObject != 0) outcome.LastCollided = result.LastCollidedObject;
+        if (result.CollisionNormalValid)
+        {
+            outcome.CollisionNormalValid = true;
+            outcome.CollisionNormal = result.CollisionNormal;
+        }
+        if (!result.Succeeded)
+        {
+            // The transition failed: retail keeps the old origin with the new turn, and the velocity.
+            outcome.Refused = true;
+            s.Position.Frame.Orientation = frame.Orientation;
+            return;
+        }
+
+        // SetPositionInternal.
+        bool prevOnWalkable = s.OnWalkable;
+        var next = result.Next;
+        var v = b.Velocity;
+        if (result.VelocityKilled)
+            v = Vector3.Zero; // OBJECTINFO::kill_velocity, called inside the transition
+        if (prevOnWalkable && !next.OnWalkable && b.MotionInterpreter && (ps & PhysicsState.Gravity) != 0)
+            v = BodyMotion.LeaveGroundVelocity(v, desiredVelocity, 0f); // MovementManager::LeaveGround
+        b.Acceleration = BodyMotion.Acceleration(ps, next.Contact, next.OnWalkable);
+        if (BodyMotion.StopsSpin(ps, next.Contact, next.OnWalkable))
+            b.Omega = Vector3.Zero;
+        b.StationaryFall = BodyMotion.HandleCollisions(ref v, ps, b.Elasticity, prevOnWalkable, next.OnWalkable,
+            result.CollisionNormalValid, result.CollisionNormal, _transition.CollisionInfo.FramesStationaryFall, b.StationaryFall);
+        b.Velocity = v;
+        s = next;
+    }
+
+    private void AddStepCollided(uint id, ref int count)
+    {
+        for (int i = 0; i < count; i++)
+            if (_stepCollided[i] == id)
+                return;
+        if (count == _stepCollided.Length)
+            Array.Resize(ref _stepCollided, count * 2);
+        _stepCollided[count++] = id;
+    }
+}

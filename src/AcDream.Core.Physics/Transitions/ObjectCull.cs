@@ -1,0 +1,149 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Transitions;
+
+/// <summary>
+/// Which of a cell's objects a transition can touch (not retail: retail tests every object listed in
+/// every cell the spheres touch). A region — a box around the check spheres, wide enough for the rest
+/// of the move, its step-ups and step-downs — is chosen at the first object test; each cell's objects
+/// whose reach box meets it are listed once, in the cell's order. Before every later test the check
+/// spheres are checked to lie inside the region; once they have left it a new region is chosen around
+/// them and the lists are made again. The region and lists carry over to the engine's next transition
+/// (a mover walking on keeps its lists for a few frames) until the spheres leave the region or the
+/// registry changes. An object left out therefore lies beyond reach of every check sphere of that
+/// test, and retail's shape tests return OK for it without changing anything (each test first asks
+/// whether a check sphere touches the shape): results are bit-identical, and the cost of a transition
+/// follows the objects near its path instead of every object in its cells.
+/// Reused without allocation once its buffers have grown.
+/// </summary>
+internal sealed class ObjectCull
+{
+    // Cells listed so far in this transition: id, and where its candidates are in _candidates.
+    private uint[] _cellIds = new uint[8];
+    private int[] _starts = new int[8];
+    private int[] _counts = new int[8];
+    private int _cells;
+    private int[] _candidates = new int[64];
+    private int _used;
+
+    private int _version = -1;
+
+    // The region, in the landblock space of _regionCell.
+    private bool _hasRegion;
+    private uint _regionCell;
+    private Vector3 _min, _max;
+
+    /// <summary>Forgets the region and the lists (the start of a transition).</summary>
+    public void Reset()
+    {
+        _hasRegion = false;
+        _cells = 0;
+        _used = 0;
+    }
+
+    /// <summary>
+    /// The indices, ascending, of the objects of cell <paramref name="cellId"/> that the check spheres of
+    /// <paramref name="transition"/> may touch now.
+    /// </summary>
+    public ReadOnlySpan<int> Candidates(Transition transition, uint cellId, in ShadowObjectRegistry.CellObjects objects)
+    {
+        int version = transition.World.Objects.Version;
+        if (version != _version)
+        {
+            // The registry changed since the lists were made (only between transitions, or in tests).
+            Reset();
+            _version = version;
+        }
+        EnsureRegionHolds(transition);
+        for (int i = 0; i < _cells; i++)
+            if (_cellIds[i] == cellId)
+                return _candidates.AsSpan(_starts[i], _counts[i]);
+        return List(cellId, objects);
+    }
+
+    /// <summary>The check spheres' box, in the landblock space of the check cell.</summary>
+    private static void SpheresBox(SpherePath path, out Vector3 min, out Vector3 max)
+    {
+        min = new Vector3(float.MaxValue);
+        max = new Vector3(float.MinValue);
+        for (int i = 0; i < path.NumSphere; i++)
+        {
+            var s = path.GlobalSphere[i];
+            min = Vector3.Min(min, s.Center - new Vector3(s.Radius));
+            max = Vector3.Max(max, s.Center + new Vector3(s.Radius));
+        }
+    }
+
+    private void EnsureRegionHolds(Transition transition)
+    {
+        var path = transition.SpherePath;
+        SpheresBox(path, out var min, out var max);
+        uint checkCell = path.CheckPos.CellId;
+        if (_hasRegion)
+        {
+            // A point's coordinates in landblock B's space are its coordinates in A's plus BlockOffset(B, A).
+            var toRegion = LandDefs.BlockOffset(_regionCell, checkCell);
+            var lo = min + toRegion;
+            var hi = max + toRegion;
+            if (lo.X >= _min.X && lo.Y >= _min.Y && lo.Z >= _min.Z && hi.X <= _max.X && hi.Y <= _max.Y && hi.Z <= _max.Z)
+                return;
+        }
+        // No region yet, or the spheres left it (the mover walked on, a long slide, a deep step): a new
+        // region around where they are now, and new lists.
+        float slack = Slack(transition);
+        _min = min - new Vector3(slack, slack, slack + 1f);
+        _max = max + new Vector3(slack, slack, slack);
+        if (!(float.IsFinite(_min.X + _min.Y + _min.Z) && float.IsFinite(_max.X + _max.Y + _max.Z)))
+        {
+            // Never expected (inputs are checked), but a region that is not finite must cull nothing.
+            _min = new Vector3(float.NegativeInfinity);
+            _max = new Vector3(float.PositiveInfinity);
+        }
+        _regionCell = checkCell;
+        _hasRegion = true;
+        _cells = 0;
+        _used = 0;
+    }
+
+    /// <summary>
+    /// How far beyond the check spheres the region reaches: the rest of the move (a placement searches
+    /// rings up to 4 m), a step up or down, and half a metre. Only a guess of where the spheres go: the
+    /// check in <see cref="EnsureRegionHolds"/> makes it safe.
+    /// </summary>
+    private static float Slack(Transition transition)
+    {
+        var path = transition.SpherePath;
+        float move = path.HasBeginPos ? path.CheckPos.GetOffset(path.EndPos).Length() : 4.5f;
+        var mover = transition.ObjectInfo;
+        return MathF.Min(move, 100f) + MathF.Max(mover.StepUpHeight, mover.StepDownHeight) + 0.5f;
+    }
+
+    private ReadOnlySpan<int> List(uint cellId, in ShadowObjectRegistry.CellObjects objects)
+    {
+        if (_cells == _cellIds.Length)
+        {
+            Array.Resize(ref _cellIds, _cells * 2);
+            Array.Resize(ref _starts, _cells * 2);
+            Array.Resize(ref _counts, _cells * 2);
+        }
+        var toCell = LandDefs.BlockOffset(cellId, _regionCell);
+        var min = _min + toCell;
+        var max = _max + toCell;
+        int start = _used;
+        for (int i = 0; i < objects.Count; i++)
+        {
+            if (!objects.Reaches(i, min, max))
+                continue;
+            if (_used == _candidates.Length)
+                Array.Resize(ref _candidates, _used * 2);
+            _candidates[_used++] = i;
+        }
+        _cellIds[_cells] = cellId;
+        _starts[_cells] = start;
+        _counts[_cells] = _used - start;
+        _cells++;
+        return _candidates.AsSpan(start, _used - start);
+    }
+}

@@ -1,0 +1,80 @@
+using AcDream.Core.Physics;
+using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Tests.Support;
+
+namespace AcDream.Core.Physics.Tests.Body;
+
+/// <summary>Smaller retail body rules: sledding friction, kill_velocity, and spin.</summary>
+public class BodyRulesTests
+{
+    private static MoverState OnPlane(Vector3 normal) => new()
+    {
+        Position = TestGeometry.At(100, 100, 0),
+        Contact = true,
+        OnWalkable = true,
+        ContactPlane = new Plane(normal, 0f),
+        ContactPlaneCellId = TestGeometry.At(100, 100, 0).CellId,
+    };
+
+    /// <summary>
+    /// calc_friction for a sledding body (CPhysicsObj.c:560-575), one 0.5 s quantum, body friction 0.95,
+    /// velocity along the plane: below 1.25 m/s friction is 1 (stops dead); from 2.5 m/s on a slope steeper
+    /// than 10° (normal z 0.9 &lt; cos 10° = 0.985) it is 0.2, keeping 0.8^0.5 = 0.894427; on level ground the
+    /// body's 0.95 applies, keeping 0.05^0.5 = 0.223607; between 1.25 and 2.5 m/s too.
+    /// </summary>
+    [Theory]
+    [InlineData(1.0f, 1.0f, 0f)]
+    [InlineData(3.0f, 0.9f, 0.894427f)]
+    [InlineData(3.0f, 1.0f, 0.223607f)]
+    [InlineData(2.0f, 0.9f, 0.223607f)]
+    public void SleddingFriction_FollowsTheDecompile(float speed, float normalZ, float kept)
+    {
+        var normal = new Vector3(MathF.Sqrt(1 - normalZ * normalZ), 0, normalZ);
+        var along = Vector3.Normalize(new Vector3(-normal.Z, 0, normal.X)) * speed; // in the plane
+        var v = along;
+        BodyMotion.ApplyFriction(ref v, 0.5f, v.LengthSquared(), OnPlane(normal), PhysicsState.Gravity | PhysicsState.Sledding, 0.95f);
+        Assert.Equal(speed * kept, v.Length(), 4);
+    }
+
+    /// <summary>
+    /// A grounded body pushed at 3 m/s (no friction) into the door's slab: the blocked transition falls back
+    /// on its last known contact plane and retail kills the velocity (OBJECTINFO::kill_velocity); on walkable
+    /// ground before and after there is no bounce, so the velocity is exactly zero from that frame on.
+    /// </summary>
+    [Fact]
+    public void ABodyBlockedOnTheGround_HasItsVelocityKilled()
+    {
+        var world = TestScenes.Door();
+        var body = BodyState.Object(new Vector3(0, 3, 0));
+        body.Friction = 0f;
+        var driver = new BodyDriver(world, TestScenes.SeedPlayer(), MoverState.OnFloor(TestGeometry.At(100, 99, 0), 0f), body);
+        var killed = driver.RunUntil(1.0 / 30, Vector3.Zero, s => s.Result.Move.VelocityKilled, maxSeconds: 2);
+        Assert.Equal(Vector3.Zero, killed.Velocity);
+        Assert.True(driver.Samples.Take(driver.Samples.Count - 1).All(s => s.Velocity == new Vector3(0, 3, 0)));
+        Assert.True(killed.Origin.Y <= TestScenes.DoorOrigin.Y + TestScenes.SlabFront - TestScenes.PlayerRadius + PhysicsConstants.Epsilon);
+    }
+
+    /// <summary>
+    /// Omega turns the body by omega × quantum each quantum (Frame::grotate): π/2 rad/s about Z for 1 s of
+    /// 1/30 s frames in the air turns a body facing north a quarter turn (quaternion (0, 0, sin 45°, cos 45°));
+    /// standing on walkable ground, calc_acceleration zeroes the spin after its first quantum.
+    /// </summary>
+    [Fact]
+    public void Omega_TurnsAnAirborneBody_AndStopsOnTheGround()
+    {
+        var world = TestGeometry.FlatWorld();
+        var mover = new MoverDescription(0x50000006, MoverDescription.Player().Spheres, 0.6f, 0.04f, PhysicsState.None);
+        var body = BodyState.Object(Vector3.Zero);
+        body.Omega = new Vector3(0, 0, MathF.PI / 2);
+        var air = new BodyDriver(world, mover, MoverState.Airborne(TestGeometry.At(100, 100, 5)), body);
+        for (int i = 0; i < 30; i++)
+            air.Step(1.0 / 30, Vector3.Zero);
+        var q = air.State.Position.Frame.Orientation;
+        Assert.Equal(MathF.Sin(MathF.PI / 4), q.Z, 3);
+        Assert.Equal(MathF.Cos(MathF.PI / 4), q.W, 3);
+
+        var ground = new BodyDriver(world, MoverDescription.Player(), MoverState.OnFloor(TestGeometry.At(100, 100, 0), 0f), body);
+        ground.Step(1.0 / 30, new Vector3(1, 0, 0));
+        Assert.Equal(Vector3.Zero, ground.Body.Omega);
+    }
+}

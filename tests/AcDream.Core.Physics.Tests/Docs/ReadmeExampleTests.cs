@@ -1,0 +1,55 @@
+using System.IO;
+using System.Reflection;
+using System.Text.RegularExpressions;
+
+namespace AcDream.Core.Physics.Tests.Docs;
+
+/// <summary>
+/// The README's "Using the library" code is the example's code: each C# block of that section equals,
+/// in order, a region marked <c>#region readme</c> in examples/WalkThrough/Program.cs, which the build
+/// compiles and CI runs. Both files are embedded into this assembly at build time.
+/// </summary>
+public class ReadmeExampleTests
+{
+    private static string Resource(string name)
+    {
+        using var stream = Assembly.GetExecutingAssembly().GetManifestResourceStream(name)
+            ?? throw new InvalidOperationException($"resource {name} is not embedded");
+        using var reader = new StreamReader(stream);
+        return reader.ReadToEnd().Replace("\r\n", "\n");
+    }
+
+    private static List<string> ReadmeBlocks()
+    {
+        string readme = Resource("README.md");
+        var section = Regex.Match(readme, @"^## Using the library\n(.*?)(?=^## |\z)", RegexOptions.Multiline | RegexOptions.Singleline);
+        Assert.True(section.Success, "README.md has no \"## Using the library\" section");
+        return Regex.Matches(section.Groups[1].Value, @"^```csharp\n(.*?)^```", RegexOptions.Multiline | RegexOptions.Singleline)
+            .Select(m => m.Groups[1].Value).ToList();
+    }
+
+    private static List<string> ExampleRegions() =>
+        Regex.Matches(Resource("WalkThrough.Program.cs"), @"^#region readme\n(.*?)^#endregion", RegexOptions.Multiline | RegexOptions.Singleline)
+            .Select(m => m.Groups[1].Value).ToList();
+
+    [Fact]
+    public void UsingTheLibrary_CodeBlocks_AreTheExamplesReadmeRegions()
+    {
+        var blocks = ReadmeBlocks();
+        var regions = ExampleRegions();
+        Assert.True(regions.Count >= 2, $"the example has {regions.Count} readme regions");
+        Assert.Equal(regions.Count, blocks.Count);
+        for (int i = 0; i < blocks.Count; i++)
+        {
+            if (blocks[i] == regions[i])
+                continue;
+            var b = blocks[i].Split('\n');
+            var r = regions[i].Split('\n');
+            int line = 0;
+            while (line < Math.Min(b.Length, r.Length) && b[line] == r[line])
+                line++;
+            Assert.Fail($"README block {i + 1} differs from the example's readme region {i + 1} at its line {line + 1}:\n" +
+                $"  README:  {(line < b.Length ? b[line] : "(end)")}\n  example: {(line < r.Length ? r[line] : "(end)")}");
+        }
+    }
+}

@@ -1,0 +1,76 @@
+using AcDream.Core.Physics;
+using AcDream.Core.Physics.Diagnostics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Tests.Support;
+
+namespace AcDream.Core.Physics.Tests.Transitions;
+
+/// <summary>
+/// The object cull (not retail; it changes no result): objects beyond reach of the check spheres are not
+/// tested, are reported as skipped, and an object moved into the path between frames is seen at once.
+/// </summary>
+public class ObjectCullTests
+{
+    private const uint BarrelId = 0x7200_0001;
+
+    private static readonly PhysicsSetup Barrel = new()
+    {
+        CylSpheres = [new CylSphere(Vector3.Zero, 0.4f, 1.0f)],
+        Height = 1f,
+        Radius = 0.4f,
+    };
+
+    /// <summary>The door world with a barrel in the door's 24 m cell, 8 m to the side of the door.</summary>
+    private static PhysicsWorld DoorAndFarBarrel()
+    {
+        var world = TestScenes.Door();
+        world.Objects.Register(BarrelId, Barrel, TestGeometry.At(108f, 100f, 0f), 1f, PhysicsState.ReportCollisions);
+        return world;
+    }
+
+    [Fact]
+    public void AnObjectBeyondReach_IsReportedSkippedOutOfReach_AndNeverTested()
+    {
+        var player = TestScenes.Player(DoorAndFarBarrel(), 100, 98.5f).WithLog();
+        player.Walk(new Vector3(0, 0.1f, 0), 12);
+
+        var events = player.Log!.Events;
+        Assert.Contains(events, e => e.Kind == TransitionEventKind.ShapeSkipped && e.EntityId == BarrelId && e.Reason == SkipReason.OutOfReach);
+        Assert.DoesNotContain(events, e => e.Kind == TransitionEventKind.ShapeTested && e.EntityId == BarrelId);
+        // The door on the path is still tested, and stops the player.
+        Assert.Contains(events, e => e.Kind == TransitionEventKind.ShapeTested && e.EntityId == TestScenes.DoorId);
+        Assert.Contains(player.Frames, f => f.Collided.Contains(TestScenes.DoorId));
+    }
+
+    [Fact]
+    public void AnObjectWithinReach_IsTested()
+    {
+        var world = TestGeometry.FlatWorld();
+        world.Objects.Register(BarrelId, Barrel, TestGeometry.At(100f, 101.5f, 0f), 1f, PhysicsState.ReportCollisions);
+        var player = TestScenes.Player(world, 100, 100).WithLog();
+        player.Walk(new Vector3(0, 0.1f, 0), 10);
+
+        Assert.Contains(player.Log!.Events, e => e.Kind == TransitionEventKind.ShapeTested && e.EntityId == BarrelId);
+        Assert.Contains(player.Frames, f => f.Collided.Contains(BarrelId));
+        // Stopped at the barrel: centres 0.4 + 0.48 apart at most, less the slide tolerance.
+        Assert.True(player.Origin.Y < 101.5f - 0.85f, $"the player stops at the barrel, got y = {player.Origin.Y}");
+    }
+
+    [Fact]
+    public void AnObjectMovedIntoThePathBetweenFrames_IsHitOnTheNextFrame()
+    {
+        // The barrel starts in the player's 24 m cell (72..96 on both axes), far from its path.
+        var world = TestGeometry.FlatWorld();
+        world.Objects.Register(BarrelId, Barrel, TestGeometry.At(75f, 75f, 0f), 1f, PhysicsState.ReportCollisions);
+        var player = TestScenes.Player(world, 90, 90);
+        player.Walk(new Vector3(0, 0.1f, 0), 3);
+        Assert.DoesNotContain(player.Frames, f => f.Collided.Length > 0);
+
+        // Right in front of the player: 0.8 m ahead, within one frame's reach of its spheres.
+        world.Objects.Move(BarrelId, TestGeometry.At(player.Origin.X, player.Origin.Y + 0.9f, 0f));
+        player.Walk(new Vector3(0, 0.1f, 0), 1);
+
+        Assert.Contains(BarrelId, player.Frames[^1].Collided);
+    }
+}
