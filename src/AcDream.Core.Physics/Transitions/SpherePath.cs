@@ -196,7 +196,7 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
-        var matrix = CurPos.Frame.Matrix;
+        var matrix = _moverMatrix.Of(CurPos.Frame);
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalCurrCenter[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin);
@@ -220,7 +220,7 @@ internal sealed class SpherePath
             GlobalLowPoint = _currLowPoint;
             return;
         }
-        var matrix = CheckPos.Frame.Matrix;
+        var matrix = _moverMatrix.Of(CheckPos.Frame);
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalSphere[i].Radius = LocalSphere[i].Radius;
@@ -228,6 +228,10 @@ internal sealed class SpherePath
         }
         GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
     }
+
+    // The mover's orientation changes rarely along a path, and the spaces tested one after another often
+    // share one: each keeps the last matrix built.
+    private readonly RotationMatrixMemo _moverMatrix = new(), _spaceMatrix = new();
 
     // What CacheGlobalCurrCenter last computed, and for which position (valid until the spheres change).
     private Position _currCentersFor;
@@ -254,7 +258,7 @@ internal sealed class SpherePath
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
         float invScale = 1.0f / scale;
-        var spaceMatrix = space.Frame.Matrix;
+        var spaceMatrix = _spaceMatrix.Of(space.Frame);
         // Position::localtolocal is the other position's localtoglobal, then this one's globaltolocal. The
         // first half is the same for every object tested from one path position: it is the fresh sphere
         // centres, computed once per position (same expression, same bits) instead of once per object.
@@ -299,7 +303,7 @@ internal sealed class SpherePath
     {
         if (!fresh.Valid || !SameBits(position, fresh.For))
         {
-            var matrix = position.Frame.Matrix;
+            var matrix = _moverMatrix.Of(position.Frame);
             for (int i = 0; i < NumSphere; i++)
                 fresh.Centres[i] = matrix.PositionToGlobal(LocalSphere[i].Center, position.Frame.Origin);
             fresh.For = position;

@@ -1,0 +1,31 @@
+using System.Numerics;
+using System.Runtime.Intrinsics;
+
+namespace AcDream.Core.Physics.Transitions;
+
+/// <summary>
+/// The rotation matrix of the last orientation asked for (not retail; changes no result). Retail caches
+/// the matrix on each frame; we build it from the quaternion in double (see <see cref="RotationMatrix"/>),
+/// which is a pure function of the quaternion's bits, so an orientation seen last time gives the very same
+/// matrix without the arithmetic. Along one transition the mover's orientation rarely changes, and the
+/// cells and objects tested one after another often share theirs.
+/// </summary>
+internal sealed class RotationMatrixMemo
+{
+    private Vector128<int> _for;
+    private RotationMatrix _matrix;
+    private bool _valid;
+
+    /// <summary>The matrix of <paramref name="frame"/>'s orientation: bit for bit <see cref="Frame.Matrix"/>.</summary>
+    public RotationMatrix Of(in Frame frame)
+    {
+        var key = frame.Orientation.AsVector128().AsInt32();
+        if (!_valid || !key.Equals(_for))
+        {
+            _matrix = frame.Matrix;
+            _for = key;
+            _valid = true;
+        }
+        return _matrix;
+    }
+}
