@@ -1,5 +1,7 @@
 using System;
+using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Validation;
@@ -24,15 +26,24 @@ internal static class Guard
     {
         if (!(MathF.Abs(value.X) <= InputLimits.MaxCoordinate) || !(MathF.Abs(value.Y) <= InputLimits.MaxCoordinate)
             || !(MathF.Abs(value.Z) <= InputLimits.MaxCoordinate))
-            throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
+            ThrowNotFinite(value, field, suffix);
     }
+
+    // The messages are built out of line so that the checks above inline into the per-frame callers.
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowNotFinite(Vector3 value, string field, string? suffix) =>
+        throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
 
     /// <summary>A coordinate: finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
     public static void Coordinate(float value, string field, string? suffix = null)
     {
         if (!(MathF.Abs(value) <= InputLimits.MaxCoordinate))
-            throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
+            ThrowNotCoordinate(value, field, suffix);
     }
+
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowNotCoordinate(float value, string field, string? suffix) =>
+        throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
 
     /// <summary>As <see cref="Coordinate"/>, returning true, for use in initializers.</summary>
     public static bool CoordinateOk(float value, string field)
@@ -53,8 +64,12 @@ internal static class Guard
     {
         Finite(value, field, suffix);
         if (!(MathF.Abs(value.LengthSquared() - 1f) <= 2e-3f))
-            throw new ArgumentException($"{Name(field, suffix)}: must be a unit vector, got {value} (length {value.Length()}).", Name(field, suffix));
+            ThrowNotUnit(value, field, suffix);
     }
+
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowNotUnit(Vector3 value, string field, string? suffix) =>
+        throw new ArgumentException($"{Name(field, suffix)}: must be a unit vector, got {value} (length {value.Length()}).", Name(field, suffix));
 
     public static void Positive(float value, string field, string? suffix = null)
     {
@@ -74,6 +89,15 @@ internal static class Guard
     /// Frame::set_rotate normalizes (times the reciprocal length). Zero-length or non-finite is refused.
     /// </summary>
     public static Quaternion Rotation(Quaternion q, string field, string? suffix = null)
+    {
+        // The common case (a finite rotation retail accepts as it is) inlines; the rest is out of line.
+        if (float.IsFinite(q.X) && float.IsFinite(q.Y) && float.IsFinite(q.Z) && float.IsFinite(q.W) && Physics.Frame.IsValidRotation(q))
+            return q;
+        return CheckedRotation(q, field, suffix);
+    }
+
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static Quaternion CheckedRotation(Quaternion q, string field, string? suffix)
     {
         if (!float.IsFinite(q.X) || !float.IsFinite(q.Y) || !float.IsFinite(q.Z) || !float.IsFinite(q.W))
             throw new ArgumentException($"{Name(field, suffix)}: quaternion must be finite, got {q}.", Name(field, suffix));
@@ -115,7 +139,13 @@ internal static class Guard
     public static void NearCell(float distance, float reach, uint cellId, Vector3 origin, string field)
     {
         if (!(distance <= InputLimits.MaxDistanceFromCell + reach))
-            throw new ArgumentException($"{field}: {origin} is {distance:0.#} m outside its cell 0x{cellId:X8}; a position must lie within {InputLimits.MaxDistanceFromCell} m plus the mover's reach ({reach:0.###} m) of the cell it names.", field);
+            ThrowFarFromCell(distance, reach, cellId, origin, field);
+    }
+
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowFarFromCell(float distance, float reach, uint cellId, Vector3 origin, string field)
+    {
+        throw new ArgumentException($"{field}: {origin} is {distance:0.#} m outside its cell 0x{cellId:X8}; a position must lie within {InputLimits.MaxDistanceFromCell} m plus the mover's reach ({reach:0.###} m) of the cell it names.", field);
     }
 
     /// <summary>
