@@ -79,6 +79,10 @@ public sealed class CellGraph
     {
         cells.Clear();
         var start = Get(position.CellId);
+        // Retail adds the outside cells again for every land cell in the list (and for each indoor cell with
+        // a portal to the outside near a sphere); they depend only on the spheres, so every call after the
+        // first adds nothing. Remember that they are in.
+        bool outsideAdded = false;
         if (!LandDefs.IsLandCell(position.CellId))
         {
             if (path is not null) path.HitsInteriorCell = true;
@@ -87,12 +91,13 @@ public sealed class CellGraph
         else
         {
             AddOutsideCells(position, spheres, cells);
+            outsideAdded = true;
         }
         if (start is null || spheres.Length == 0)
             return null;
 
         for (int i = 0; i < cells.Count; i++)
-            AddTransitCells(cells[i], position, spheres, cells, path);
+            AddTransitCells(cells[i], position, spheres, cells, path, ref outsideAdded);
 
         if (!findContaining)
             return null;
@@ -119,11 +124,15 @@ public sealed class CellGraph
         return containing;
     }
 
-    private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path)
+    private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path, ref bool outsideAdded)
     {
         if (cell is LandCell land)
         {
-            AddOutsideCells(position, spheres, cells);
+            if (!outsideAdded)
+            {
+                AddOutsideCells(position, spheres, cells);
+                outsideAdded = true;
+            }
             if (land.Building is { } building)
                 foreach (uint id in building.EntranceCells)
                     if (Get(id) is EnvCell entrance)
@@ -150,8 +159,11 @@ public sealed class CellGraph
             if (Get(portal.OtherCellId) is EnvCell other)
                 AddIfSphereInside(other, position, spheres, cells, path);
         }
-        if (checkOutside)
+        if (checkOutside && !outsideAdded)
+        {
             AddOutsideCells(position, spheres, cells);
+            outsideAdded = true;
+        }
     }
 
     private static void AddIfSphereInside(EnvCell env, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path)
