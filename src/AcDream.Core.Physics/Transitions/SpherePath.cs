@@ -207,6 +207,9 @@ internal sealed class SpherePath
         _currLowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
         _currCentersFor = CurPos;
         _currCentersValid = true;
+        // These are also the first half of Position::localtolocal for the current position (the same
+        // expression on the same inputs), which the object tests would otherwise compute again.
+        Remember(ref _curFresh, CurPos, GlobalCurrCenter);
     }
 
     /// <summary>Recomputes the spheres at the check position.</summary>
@@ -227,6 +230,15 @@ internal sealed class SpherePath
             GlobalSphere[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CheckPos.Frame.Origin);
         }
         GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
+        Remember(ref _checkFresh, CheckPos, GlobalSphere);
+    }
+
+    private void Remember(ref FreshCentres fresh, in Position position, in SpherePair spheres)
+    {
+        for (int i = 0; i < NumSphere; i++)
+            fresh.Centres[i] = spheres[i].Center;
+        fresh.For = position;
+        fresh.Valid = true;
     }
 
     // The mover's orientation changes rarely along a path, and the spaces tested one after another often
