@@ -129,4 +129,26 @@ public class BspNodeQueryTests
         var tree = BspTree.Create(faces, nodes);
         Assert.False(BspQuery.SphereIntersectsSolid(tree, new Sphere(new Vector3(1.4f, 0, 0), 0.5f)));
     }
+    [Fact]
+    public void SphereIntersectsPoly_StraddledSplit_SearchesTheFrontSideToo()
+    {
+        // Root split x = 0 (normal +X, D 0); its front is a leaf holding one wall at x = 0.3 facing −X
+        // (plane −x + 0.3 = 0), its back is empty. Sphere r 0.5 at x = −0.1 moving +X:
+        //   split distance −0.1, reach 0.5 − 0.0002 = 0.4998 → −0.4998 < −0.1 < 0.4998: it straddles, so
+        //   both sides are searched;
+        //   wall distance −(−0.1) + 0.3 = 0.4 ≤ 0.4998 → hit; movement·N = 0.5·(−1) < 0 → from the front;
+        //   contact = centre − N·0.4 = (−0.1 + 0.4, 0, 0) = (0.3, 0, 0).
+        // Searching only the back (empty) side would miss it.
+        var wall = BspTestKit.Rect(new Vector3(0.3f, -1, -1), new Vector3(0.3f, 1, 1), -Vector3.UnitX);
+        var tree = BspTree.Create(new[] { wall }, new[]
+        {
+            new BspNodeData { SplitPlane = new Plane(Vector3.UnitX, 0f), Front = 1, Back = -1 },
+            new BspNodeData { IsLeaf = true, Solid = false, Polygons = new[] { 0 } },
+        });
+        Polygon? hit = null;
+        var contact = Vector3.Zero;
+        Assert.True(BspNodeQuery.SphereIntersectsPoly(tree, 0, new Sphere(new Vector3(-0.1f, 0, 0), 0.5f), new Vector3(0.5f, 0, 0), ref hit, ref contact));
+        Assert.Same(wall, hit);
+        Assert.Equal(0.3f, contact.X, 5);
+    }
 }

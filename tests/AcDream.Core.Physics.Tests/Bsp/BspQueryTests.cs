@@ -221,4 +221,68 @@ public class BspQueryTests
             });
         Assert.Equal(0, allocated);
     }
+    [Fact]
+    public void InContact_TwoSpheres_SecondSphereGrazeFromBehindSlides()
+    {
+        // Sphere 0 (r 0.3) at (1.2, 0, −1.6) is clear: 0.6 below the −Z face, and √(0.2² + 0.6²) = 0.632
+        // from the +X face's bottom edge. Sphere 1 (z = −0.6) is 0.2 in front of the +X face (≤ 0.3 − 0.0002,
+        // inside the face's y, z range) but moves away from it (movement +X · N +X > 0): a graze from
+        // behind. Retail records sphere 1's graze as a negative-polygon hit that slides (step-up flag
+        // false), with the reversed normal −X.
+        var t = BoxFixtures.MakeTransition(new Vector3(1.1f, 0, -1.6f), new Vector3(1.2f, 0, -1.6f), 0.3f, twoSpheres: true);
+        t.ObjectInfo.State = ObjectInfoState.Contact;
+        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        var path = t.SpherePath;
+        Assert.True(path.NegPolyHit);
+        Assert.False(path.NegStepUp);
+        Assert.Equal(-Vector3.UnitX, path.NegCollisionNormal);
+    }
+
+    [Fact]
+    public void AdjustToPlane_BisectsToWithinTwoHundredthsOfTheMove()
+    {
+        // Sphere r 0.5 from (1.4, 2, 0) to (1.2, 0, 0), movement (−0.2, −2, 0), past the box's +X/+Y edge
+        // (x = 1, y = 1). The start is 0.4 from the +X plane (< 0.5): touch time 1 → bisection over [0, 1].
+        // At time t the centre is (1.4 − 0.2t, 2 − 2t); it hits the edge when its distance to it,
+        // √((0.4 − 0.2t)² + (1 − 2t)²), is ≤ 0.4998.
+        //   t 0.5      → (0.3, 0)             distance 0.3     hit   → [0, 0.5]
+        //   t 0.25     → (0.35, 0.5)          distance 0.610   clear → [0.25, 0.5]
+        //   t 0.375    → (0.325, 0.25)        distance 0.410   hit   → [0.25, 0.375]
+        //   t 0.3125   → (0.3375, 0.375)      distance 0.5045  clear → [0.3125, 0.375]
+        //   t 0.34375  → (0.33125, 0.3125)    distance 0.455   hit   → [0.3125, 0.34375]
+        //   t 0.328125 → (0.334375, 0.34375)  distance 0.4796  hit   → [0.3125, 0.328125], width 1/64 < 0.02: stop.
+        // Result t = 0.3125: centre (1.4 − 0.0625, 2 − 0.625) = (1.3375, 1.375, 0).
+        var tree = BoxFixtures.SolidBox(out var faces);
+        var sphere = new Sphere(new Vector3(1.2f, 0, 0), 0.5f);
+        var contact = Vector3.Zero;
+        Assert.True(BspQuery.AdjustToPlane(tree, ref sphere, new Vector3(1.4f, 2f, 0), faces[0], ref contact));
+        Assert.Equal(1.3375f, sphere.Center.X, 5);
+        Assert.Equal(1.375f, sphere.Center.Y, 5);
+    }
+
+    [Fact]
+    public void AdjustToPlane_ReAimsAtTheNearerWall()
+    {
+        // One leaf holding two walls facing +X: A at x = 0.7 (first), B at x = 1. Sphere r 0.5 from x = 3
+        // to x = 0.6 (movement −2.4); at the end it hits A first (0.1 away), so A is the polygon given.
+        //   touch on A: (0.5 − 2.3) / −2.4 = 0.75 → x = 1.2: A 0.5 away (> 0.4998, clear) but B 0.2 away:
+        //   a hit — re-aim at B, bracket upper 0.75 (one try used);
+        //   touch on B: (0.5 − 2) / −2.4 = 0.625 → x = 1.5: A 0.8, B 0.5 away, clear → lower 0.625;
+        //   bisection over [0.625, 0.75]: 0.6875 (x 1.35), 0.65625 (x 1.425), 0.640625 (x 1.4625) all hit B,
+        //   width 1/64 < 0.02: stop at lower 0.625 → x = 3 − 1.5 = 1.5.
+        var wallA = BspTestKit.Rect(new Vector3(0.7f, -1, -1), new Vector3(0.7f, 1, 1), Vector3.UnitX);
+        var wallB = BspTestKit.Rect(new Vector3(1f, -1, -1), new Vector3(1f, 1, 1), Vector3.UnitX);
+        var tree = BspTree.Create(new[] { wallA, wallB }, new[]
+        {
+            new BspNodeData { IsLeaf = true, Solid = false, Polygons = new[] { 0, 1 } },
+        });
+        var sphere = new Sphere(new Vector3(0.6f, 0, 0), 0.5f);
+        var currPos = new Vector3(3f, 0, 0);
+        var contact = Vector3.Zero;
+        Polygon? hit = null;
+        Assert.True(BspNodeQuery.SphereIntersectsPoly(tree, 0, sphere, sphere.Center - currPos, ref hit, ref contact));
+        Assert.Same(wallA, hit);
+        Assert.True(BspQuery.AdjustToPlane(tree, ref sphere, currPos, wallA, ref contact));
+        Assert.Equal(1.5f, sphere.Center.X, 5);
+    }
 }
