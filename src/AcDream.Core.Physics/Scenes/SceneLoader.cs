@@ -582,16 +582,22 @@ public static class SceneLoader
                     throw new SceneFormatException(o.Child("jump"), $"must be a vertical speed of zero or more m/s, got {jump}.");
                 int count = o.Int("count", 1);
                 o.End();
-                if (count < 1)
-                    throw new SceneFormatException(o.Child("count"), $"must be 1 or more, got {count}.");
-                if ((long)frames.Count + count > MaxFramesPerMover)
-                    throw new SceneFormatException(o.Child("count"), $"a mover may walk at most {MaxFramesPerMover} frames.");
+                CheckCount(o, count, frames.Count);
                 for (int i = 0; i < count; i++)
                     frames.Add(new SceneStep(dt, velocity, jump));
             }
             if (frames.Count == 0)
                 throw new SceneFormatException(path, "a mover needs at least one step.");
             return [.. frames];
+        }
+
+        /// <summary>A motion or step item's repeat count: at least 1, and within the per-mover frame limit.</summary>
+        private static void CheckCount(JsonObj o, int count, int framesSoFar)
+        {
+            if (count < 1)
+                throw new SceneFormatException(o.Child("count"), $"must be 1 or more, got {count}.");
+            if ((long)framesSoFar + count > MaxFramesPerMover)
+                throw new SceneFormatException(o.Child("count"), $"a mover may walk at most {MaxFramesPerMover} frames.");
         }
 
         private static Vector3[] ReadMotion(JsonElement e, string path, List<int> itemStarts)
@@ -610,10 +616,7 @@ public static class SceneLoader
                     var offset = o.Vec3("offset");
                     int count = o.Int("count", 1);
                     o.End();
-                    if (count < 1)
-                        throw new SceneFormatException(o.Child("count"), $"must be 1 or more, got {count}.");
-                    if ((long)frames.Count + count > MaxFramesPerMover)
-                        throw new SceneFormatException(o.Child("count"), $"a mover may walk at most {MaxFramesPerMover} frames.");
+                    CheckCount(o, count, frames.Count);
                     for (int i = 0; i < count; i++)
                         frames.Add(offset);
                 }

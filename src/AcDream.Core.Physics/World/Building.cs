@@ -21,8 +21,7 @@ public sealed class Building
     public Building(PhysicsModel shell, Position position, IReadOnlyList<uint> entranceCells)
     {
         Shell = shell ?? throw new ArgumentNullException(nameof(shell));
-        Guard.Frame(position.Frame, "building.position");
-        position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "building.position.orientation");
+        Guard.Pose(ref position.Frame, "building.position");
         Position = position;
         _entranceCells = entranceCells is null ? Array.Empty<uint>() : [.. entranceCells];
     }

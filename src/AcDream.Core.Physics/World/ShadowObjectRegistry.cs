@@ -223,7 +223,6 @@ public sealed class ShadowObjectRegistry
         {
             string name = $"object 0x{entityId:X8}";
             Guard.Frame(position.Frame, $"{name}.position");
-            Guard.Rotation(position.Frame.Orientation, $"{name}.position.orientation");
             _graph.GetRequired(position.CellId, $"{name}.position.cell");
         }
         position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
