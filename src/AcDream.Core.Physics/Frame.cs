@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
 
@@ -138,6 +139,7 @@ public struct Frame
     /// Retail Frame::IsValid's rotation test (acclient.c:357024): finite, with a squared length within
     /// 5 × EPSILON of one. Such a rotation is used as given; retail does not normalize it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static bool IsValidRotation(Quaternion q)
     {
         float norm = (float)((double)q.Z * q.Z + (double)q.Y * q.Y + (double)q.X * q.X + (double)q.W * q.W);
