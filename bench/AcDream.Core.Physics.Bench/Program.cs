@@ -25,6 +25,7 @@ public static class Program
             case "registry": return Registry.RegistryJob.Run();
             case "realcells": return RealCells.RealCellsJob.Run(rest);
             case "trace": return DoorTrace.Run(rest);
+            case "pieces": return Pieces.Run(rest);
             default:
                 BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
                 return 0;

@@ -323,7 +323,7 @@ internal sealed class SpherePath
         LocalSpaceCurrCenter = new Sphere(spaceMatrix.FrameToLocal(toSpaceFromCur + curCentres[0], space.Frame.Origin) * invScale,
             LocalSphere[0].Radius * invScale);
         LocalSpacePos = space;
-        LocalSpaceZ = spaceMatrix.PositionToLocal(Vector3.UnitZ);
+        LocalSpaceZ = _spaceMatrix.LocalUp();
     }
 
     /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>

@@ -52,6 +52,7 @@ internal sealed partial class Transition
     }
 
     private float _subStepScale = 1f;
+    private readonly RotationInterpolationMemo _interpolation = new();
 
     /// <summary>Retail's step-count rule, exposed for tests and tools.</summary>
     /// <param name="offset">The whole motion.</param>
@@ -138,7 +139,7 @@ internal sealed partial class Transition
             if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
                 return step != 0 && state == TransitionState.OK;
             if (!freeRotate)
-                path.CheckPos.Frame.InterpolateRotation(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps);
+                path.CheckPos.Frame.SetRotation(_interpolation.Between(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps));
 
             CollisionInfo.SlidingNormalValid = false;
             CollisionInfo.ClearContactPlane();
