@@ -15,9 +15,14 @@ internal sealed class Workload
 {
     private readonly PhysicsEngine _engine;
     private readonly MoverDescription _player;
-    private readonly MoverState _start;
+    private MoverState _start;
     private readonly Vector3 _step;
 
+    private Workload(string name, string description, PhysicsWorld world, MoverState start, Vector3 step, int frames, int skip)
+        : this(name, description, world, start, step, frames)
+    {
+        for (int i = 0; i < skip; i++) { var t = _start.Position; t.Frame.Origin += _step; _start = _engine.Resolve(_player, _start, t).Next; }
+    }
     private Workload(string name, string description, PhysicsWorld world, MoverState start, Vector3 step, int frames)
     {
         Name = name;
@@ -79,6 +84,8 @@ internal sealed class Workload
             Standing(100f, FrontStop - 0.2f), new Vector3(0, 2f / 30f, 0), 40),
         new("slide-ne", "45° NE slide along the face: 30 frames of 0.1 m from (99.6, 99.0)", DoorWorld(0, 0),
             Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
+        new("refused", "x", DoorWorld(0, 0), Standing(100f, FrontStop - 0.2f), new Vector3(0, 2f / 30f, 0), 37, 3),
+        new("free", "x", DoorWorld(0, 0), Standing(100f, FrontStop - 0.2f), new Vector3(0, 2f / 30f, 0), 2),
         new("door", "the door transition: one frame of 0.1 m into the face from 0.05 m short", DoorWorld(0, 0),
             Standing(100f, FrontStop - 0.05f), new Vector3(0, 0.1f, 0), 1),
         new("door+100", "the door transition with 100 props in the door's cell (4 m or more from the door)", DoorWorld(100, 0),

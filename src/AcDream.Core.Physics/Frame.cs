@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
 
@@ -92,7 +93,10 @@ public struct Frame
     /// Frame::interpolate_rotation, acclient.c:357257): spherical, falling back to the linear blend when
     /// the two are within EPSILON or the spherical weights leave [0, 1]; normalized as set_rotate does.
     /// </summary>
-    public void InterpolateRotation(in Frame from, in Frame to, float t)
+    public void InterpolateRotation(in Frame from, in Frame to, float t) => SetRotation(InterpolatedRotation(from, to, t));
+
+    /// <summary>The rotation <see cref="InterpolateRotation"/> sets (when it is valid): normalized, not yet checked.</summary>
+    internal static Quaternion InterpolatedRotation(in Frame from, in Frame to, float t)
     {
         double fw = from.Qw, fx = from._qx, fy = from._qy, fz = from._qz;
         double tw = to.Qw, tx = to._qx, ty = to._qy, tz = to._qz;
@@ -115,7 +119,7 @@ public struct Frame
                 wTo = b;
             }
         }
-        SetRotate(
+        return Normalized(
             (float)(wFrom * fw + tw * wTo),
             (float)(fx * wFrom + tx * wTo),
             (float)(fy * wFrom + ty * wTo),
@@ -126,18 +130,27 @@ public struct Frame
     /// Retail Frame::set_rotate (acclient.c:357062): normalizes by multiplying by the reciprocal length
     /// (in double), and keeps the old orientation when the result is not a valid rotation (Frame::IsValid).
     /// </summary>
-    internal void SetRotate(float qw, float qx, float qy, float qz)
+    internal void SetRotate(float qw, float qx, float qy, float qz) => SetRotation(Normalized(qw, qx, qy, qz));
+
+    /// <summary>Set_rotate's normalization: times the reciprocal length, in double.</summary>
+    private static Quaternion Normalized(float qw, float qx, float qy, float qz)
     {
         double inv = 1.0 / Math.Sqrt((double)qw * qw + (double)qx * qx + (double)qy * qy + (double)qz * qz);
-        var q = new Quaternion((float)(qx * inv), (float)(qy * inv), (float)(inv * qz), (float)(qw * inv));
-        if (IsValidRotation(q))
-            Orientation = q;
+        return new Quaternion((float)(qx * inv), (float)(qy * inv), (float)(inv * qz), (float)(qw * inv));
+    }
+
+    /// <summary>Set_rotate's last step: a normalized rotation is taken only when it is valid (Frame::IsValid).</summary>
+    internal void SetRotation(Quaternion normalized)
+    {
+        if (IsValidRotation(normalized))
+            Orientation = normalized;
     }
 
     /// <summary>
     /// Retail Frame::IsValid's rotation test (acclient.c:357024): finite, with a squared length within
     /// 5 × EPSILON of one. Such a rotation is used as given; retail does not normalize it.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static bool IsValidRotation(Quaternion q)
     {
         float norm = (float)((double)q.Z * q.Z + (double)q.Y * q.Y + (double)q.X * q.X + (double)q.W * q.W);

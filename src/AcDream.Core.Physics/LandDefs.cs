@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
 
@@ -43,6 +44,7 @@ public static class LandDefs
     /// The vector from the south-west corner of <paramref name="fromCell"/>'s landblock to that of
     /// <paramref name="toCell"/>'s landblock (retail get_block_offset): zero within one landblock.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Vector3 BlockOffset(uint fromCell, uint toCell)
     {
         uint a = fromCell >> 16, b = toCell >> 16;

@@ -16,6 +16,7 @@ public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
     private uint[] _collided = new uint[8];
+    private RefusalMemo _lastRefusal;
 
     /// <summary>Creates an engine over a world.</summary>
     public PhysicsEngine(PhysicsWorld world) => _transition = new Transition(world);
@@ -23,11 +24,18 @@ public sealed partial class PhysicsEngine
     /// <summary>The world.</summary>
     public PhysicsWorld World => _transition.World;
 
+    /// <summary>The engine's reusable transition, for the component benchmarks.</summary>
+    internal Transition Transition => _transition;
+
     /// <summary>Sub-step length in sphere radii: 1 (default) is retail; see <see cref="Transition.SubStepScale"/>.</summary>
     public float SubStepScale
     {
         get => _transition.SubStepScale;
-        set => _transition.SubStepScale = value;
+        set
+        {
+            _transition.SubStepScale = value;
+            _lastRefusal.Clear();
+        }
     }
 
     /// <summary>Structured diagnostics; null (default) costs nothing.</summary>
@@ -61,12 +69,19 @@ public sealed partial class PhysicsEngine
     private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
+        if (_lastRefusal.Matches(mover, state, target))
+            return Refused(state);
         var begin = state.Position;
         Guard.Pose(ref begin.Frame, "state.position");
         Guard.Pose(ref target.Frame, "target");
         var cell = ValidateState(mover, state, begin, target.CellId);
 
         var t = _transition;
+        if (t.RefusesBeforeFirstStep(mover, state, begin, target))
+        {
+            _lastRefusal.Remember(mover, state, target);
+            return Refused(state);
+        }
         Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
         t.SpherePath.InitPath(cell, in begin, in target);
@@ -80,7 +95,7 @@ public sealed partial class PhysicsEngine
     /// it, contact plane, sliding normal) and that <paramref name="targetCellId"/> is loaded; returns the
     /// state's cell. The cell ids are usually one and the same: each distinct id is looked up once.
     /// </summary>
-    private World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
+    internal World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
     {
         var cells = _transition.World.Cells;
         var cell = cells.GetRequired(begin.CellId, "state.position.cell");
@@ -120,7 +135,7 @@ public sealed partial class PhysicsEngine
         return Collect(t, ok, airborne);
     }
 
-    private static void Prepare(Transition t, MoverDescription mover, in MoverState state)
+    internal static void Prepare(Transition t, MoverDescription mover, in MoverState state)
     {
         t.SpherePath.Reset();
         t.CollisionInfo.Reset();
@@ -151,7 +166,11 @@ public sealed partial class PhysicsEngine
             t.InitSlidingNormal(state.SlidingNormal);
     }
 
-    private MoveResult Collect(Transition t, bool ok, in MoverState previous)
+    /// <summary>The result of a move refused before its first sub-step: nothing moved and nothing was hit.</summary>
+    private MoveResult Refused(in MoverState previous) =>
+        new(false, previous, TransitionState.Collided, false, Vector3.Zero, false, new ReadOnlyMemory<uint>(_collided, 0, 0), 0, false);
+
+    internal MoveResult Collect(Transition t, bool ok, in MoverState previous)
     {
         var ci = t.CollisionInfo;
         var path = t.SpherePath;

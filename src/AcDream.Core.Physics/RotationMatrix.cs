@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics;
 
@@ -45,6 +46,7 @@ internal readonly struct RotationMatrix
     }
 
     /// <summary>Frame::localtoglobalvec (acclient.c:143658): M·v, summed z, x, y.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 FrameToGlobal(Vector3 v) => new(
         (float)((double)_m6 * v.Z + (double)_m0 * v.X + (double)_m3 * v.Y),
         (float)((double)_m7 * v.Z + (double)_m1 * v.X + (double)_m4 * v.Y),
@@ -54,12 +56,14 @@ internal readonly struct RotationMatrix
     /// Frame::localtoglobal (acclient.c:143701) and the origin of Frame::combine (acclient.c:326562):
     /// M·v + origin, summed z, x, y, then the origin, rounded once.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 FrameToGlobal(Vector3 v, Vector3 origin) => new(
         (float)((double)_m6 * v.Z + (double)_m0 * v.X + (double)_m3 * v.Y + origin.X),
         (float)((double)_m7 * v.Z + (double)_m1 * v.X + (double)_m4 * v.Y + origin.Y),
         (float)((double)_m8 * v.Z + (double)_m2 * v.X + (double)_m5 * v.Y + origin.Z));
 
     /// <summary>Frame::globaltolocalvec (acclient.c:143674): Mᵀ·v, summed z, x, y.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 FrameToLocal(Vector3 v) => new(
         (float)((double)_m2 * v.Z + (double)_m0 * v.X + (double)_m1 * v.Y),
         (float)((double)_m5 * v.Z + (double)_m3 * v.X + (double)_m4 * v.Y),
@@ -69,6 +73,7 @@ internal readonly struct RotationMatrix
     /// Frame::globaltolocal (acclient.c:143717): Mᵀ·(p − origin), summed z, x, y. Retail stores the
     /// differences as floats, except that the z row uses the unrounded z difference.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 FrameToLocal(Vector3 point, Vector3 origin)
     {
         float dx = point.X - origin.X, dy = point.Y - origin.Y;
@@ -81,24 +86,28 @@ internal readonly struct RotationMatrix
     }
 
     /// <summary>Position::localtoglobalvec (acclient.c:147164): M·v, summed y, x, z.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 PositionToGlobal(Vector3 v) => new(
         (float)((double)_m3 * v.Y + (double)_m0 * v.X + (double)_m6 * v.Z),
         (float)((double)_m4 * v.Y + (double)_m1 * v.X + (double)_m7 * v.Z),
         (float)((double)_m5 * v.Y + (double)_m2 * v.X + (double)_m8 * v.Z));
 
     /// <summary>Position::localtoglobal / localtolocal (acclient.c:147140, :143794): M·v + origin, summed y, x, z, then the origin.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 PositionToGlobal(Vector3 v, Vector3 origin) => new(
         (float)((double)_m3 * v.Y + (double)_m0 * v.X + (double)_m6 * v.Z + origin.X),
         (float)((double)_m4 * v.Y + (double)_m1 * v.X + (double)_m7 * v.Z + origin.Y),
         (float)((double)_m5 * v.Y + (double)_m2 * v.X + (double)_m8 * v.Z + origin.Z));
 
     /// <summary>Position::globaltolocalvec (acclient.c:313494): Mᵀ·v, summed y, x, z.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 PositionToLocal(Vector3 v) => new(
         (float)((double)_m1 * v.Y + (double)_m0 * v.X + (double)_m2 * v.Z),
         (float)((double)_m4 * v.Y + (double)_m3 * v.X + (double)_m5 * v.Z),
         (float)((double)_m7 * v.Y + (double)_m6 * v.X + (double)_m8 * v.Z));
 
     /// <summary>Plane::localtoglobal's normal (acclient.c:467672): M·v, summed z, y, x.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 PlaneNormalToGlobal(Vector3 v) => new(
         (float)((double)_m6 * v.Z + (double)_m3 * v.Y + (double)_m0 * v.X),
         (float)((double)_m7 * v.Z + (double)_m4 * v.Y + (double)_m1 * v.X),

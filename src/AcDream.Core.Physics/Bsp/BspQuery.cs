@@ -55,7 +55,7 @@ internal static class BspQuery
         var path = transition.SpherePath;
         var collisions = transition.CollisionInfo;
         var sphere0 = path.LocalSpaceSphere[0];
-        var currCenter = path.LocalSpaceCurrCenter[0].Center;
+        var currCenter = path.LocalSpaceCurrCenter.Center;
         var movement = sphere0.Center - currCenter;
         bool twoSpheres = path.NumSphere > 1;
 

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
 
@@ -10,6 +11,7 @@ internal static class VectorMath
     /// Retail normalize_check_small: normalizes in place unless the vector is too short to have a
     /// direction; returns true when it was too short (and leaves it unchanged).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool NormalizeCheckSmall(ref Vector3 v)
     {
         // Retail (AC1Legacy::Vector3::normalize_check_small, acclient.c:143621) takes the length and its

@@ -107,8 +107,14 @@ internal sealed class CollisionInfo
     public void SetSlidingNormal(Vector3 normal)
     {
         SlidingNormalValid = true;
+        SlidingNormal = HorizontalUnit(normal);
+    }
+
+    /// <summary>The horizontal part of a vector, normalized; zero when too short (the sliding normal's form).</summary>
+    internal static Vector3 HorizontalUnit(Vector3 normal)
+    {
         var horizontal = new Vector3(normal.X, normal.Y, 0f);
-        SlidingNormal = VectorMath.NormalizeCheckSmall(ref horizontal) ? Vector3.Zero : horizontal;
+        return VectorMath.NormalizeCheckSmall(ref horizontal) ? Vector3.Zero : horizontal;
     }
 
     /// <summary>Adds an object to the collided list once; a non-OK result makes it the last collided.</summary>

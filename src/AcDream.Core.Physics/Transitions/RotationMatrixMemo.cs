@@ -15,6 +15,8 @@ internal sealed class RotationMatrixMemo
     private Vector128<int> _for;
     private RotationMatrix _matrix;
     private bool _valid;
+    private Vector3 _up;
+    private bool _upValid;
 
     /// <summary>The matrix of <paramref name="frame"/>'s orientation: bit for bit <see cref="Frame.Matrix"/>.</summary>
     public RotationMatrix Of(in Frame frame)
@@ -25,7 +27,19 @@ internal sealed class RotationMatrixMemo
             _matrix = frame.Matrix;
             _for = key;
             _valid = true;
+            _upValid = false;
         }
         return _matrix;
+    }
+
+    /// <summary>World up in the space of the orientation last asked for (Position::globaltolocalvec of +Z).</summary>
+    public Vector3 LocalUp()
+    {
+        if (!_upValid)
+        {
+            _up = _matrix.PositionToLocal(Vector3.UnitZ);
+            _upValid = true;
+        }
+        return _up;
     }
 }

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Numerics;
 using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
@@ -25,10 +26,11 @@ internal sealed class SpherePath
     public Vector3 GlobalLowPoint;
     /// <summary>The spheres at the check position in the space of the object or cell being tested.</summary>
     public SpherePair LocalSpaceSphere;
-    /// <summary>The lowest point in the space being tested.</summary>
-    public Vector3 LocalSpaceLowPoint;
-    /// <summary>The spheres at the current position in the space being tested.</summary>
-    public SpherePair LocalSpaceCurrCenter;
+    /// <summary>
+    /// Sphere 0 at the current position in the space being tested. Retail keeps every sphere's current
+    /// centre and a local low point too; no test reads them, so they are not computed.
+    /// </summary>
+    public Sphere LocalSpaceCurrCenter;
     /// <summary>The spheres at the current position, landblock space of the current cell.</summary>
     public SpherePair GlobalCurrCenter;
     /// <summary>The placement of the space being tested.</summary>
@@ -112,7 +114,7 @@ internal sealed class SpherePath
         NumSphere = 0;
         LocalSphere = default; GlobalSphere = default; LocalSpaceSphere = default;
         LocalSpaceCurrCenter = default; GlobalCurrCenter = default;
-        LocalLowPoint = GlobalLowPoint = LocalSpaceLowPoint = LocalSpaceZ = GlobalOffset = default;
+        LocalLowPoint = GlobalLowPoint = LocalSpaceZ = GlobalOffset = default;
         LocalSpacePos = BeginPos = EndPos = CurPos = CheckPos = BackupCheckPos = WalkablePos = default;
         BeginCell = CurCell = CheckCell = BackupCell = null;
         HasBeginPos = false;
@@ -196,21 +198,55 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
-        var matrix = _moverMatrix.Of(CurPos.Frame);
-        for (int i = 0; i < NumSphere; i++)
+        // A move usually starts where the previous one ended, whose spheres were computed for the very
+        // same position and spheres: the same transforms of the same inputs give the same bits.
+        ref var last = ref _lastCurrent;
+        if (!last.Valid || last.NumSphere != NumSphere || !SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres)
+            || !SameBits(LocalLowPoint, last.LowPointLocal))
         {
-            GlobalCurrCenter[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin);
-            GlobalCurrCenter[i].Radius = LocalSphere[i].Radius;
+            var matrix = _moverMatrix.Of(CurPos.Frame);
+            for (int i = 0; i < NumSphere; i++)
+                last.Centres[i] = new Sphere(matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin), LocalSphere[i].Radius);
+            last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
+            last.For = CurPos;
+            last.NumSphere = NumSphere;
+            last.Spheres = LocalSphere;
+            last.LowPointLocal = LocalLowPoint;
+            last.Valid = true;
         }
+        for (int i = 0; i < NumSphere; i++)
+            GlobalCurrCenter[i] = last.Centres[i];
         // Retail sets the check position to the current one right after this (init_path, and accepting a
         // sub-step); remember what was computed so that CacheGlobalSphere can copy it instead.
-        _currLowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
+        _currLowPoint = last.LowPoint;
         _currCentersFor = CurPos;
         _currCentersValid = true;
         // These are also the first half of Position::localtolocal for the current position (the same
         // expression on the same inputs), which the object tests would otherwise compute again.
         Remember(ref _curFresh, CurPos, GlobalCurrCenter);
     }
+
+    /// <summary>The last spheres computed for a current position, kept from one move to the next.</summary>
+    private struct CurrentSpheres
+    {
+        public bool Valid;
+        public Position For;
+        public int NumSphere;
+        public SpherePair Spheres;
+        public Vector3 LowPointLocal;
+        public SpherePair Centres;
+        public Vector3 LowPoint;
+    }
+
+    private CurrentSpheres _lastCurrent;
+
+    private static bool SameSpheres(in SpherePair a, in SpherePair b) =>
+        SameBits(a[0].Center, b[0].Center) && BitEq(a[0].Radius, b[0].Radius)
+        && SameBits(a[1].Center, b[1].Center) && BitEq(a[1].Radius, b[1].Radius);
+
+    private static bool BitEq(float a, float b) => System.BitConverter.SingleToInt32Bits(a) == System.BitConverter.SingleToInt32Bits(b);
+
+    private static bool SameBits(Vector3 a, Vector3 b) => a.AsVector128().AsInt32().Equals(b.AsVector128().AsInt32());
 
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
@@ -256,6 +292,7 @@ internal sealed class SpherePath
         && a.Frame.Origin.AsVector128().AsInt32().Equals(b.Frame.Origin.AsVector128().AsInt32())
         && a.Frame.Orientation.AsVector128().AsInt32().Equals(b.Frame.Orientation.AsVector128().AsInt32());
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)
     {
         for (int i = 0; i < NumSphere; i++)
@@ -276,18 +313,17 @@ internal sealed class SpherePath
         // centres, computed once per position (same expression, same bits) instead of once per object.
         ref readonly var curCentres = ref CentresAt(CurPos, ref _curFresh);
         ref readonly var checkCentres = ref CentresAt(CheckPos, ref _checkFresh);
-        var toSpaceFromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
         var toSpaceFromCheck = LandDefs.BlockOffset(space.CellId, CheckPos.CellId);
         for (int i = 0; i < NumSphere; i++)
         {
-            LocalSpaceCurrCenter[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCur + curCentres[i], space.Frame.Origin) * invScale;
-            LocalSpaceCurrCenter[i].Radius = LocalSphere[i].Radius * invScale;
             LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
             LocalSpaceSphere[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCheck + checkCentres[i], space.Frame.Origin) * invScale;
         }
+        var toSpaceFromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
+        LocalSpaceCurrCenter = new Sphere(spaceMatrix.FrameToLocal(toSpaceFromCur + curCentres[0], space.Frame.Origin) * invScale,
+            LocalSphere[0].Radius * invScale);
         LocalSpacePos = space;
-        LocalSpaceZ = spaceMatrix.PositionToLocal(Vector3.UnitZ);
-        LocalSpaceLowPoint = LocalSpaceSphere[0].Center - LocalSpaceZ * LocalSpaceSphere[0].Radius;
+        LocalSpaceZ = _spaceMatrix.LocalUp();
     }
 
     /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>

@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Diagnostics;
@@ -51,6 +52,7 @@ internal sealed partial class Transition
     }
 
     private float _subStepScale = 1f;
+    private readonly RotationInterpolationMemo _interpolation = new();
 
     /// <summary>Retail's step-count rule, exposed for tests and tools.</summary>
     /// <param name="offset">The whole motion.</param>
@@ -137,7 +139,7 @@ internal sealed partial class Transition
             if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
                 return step != 0 && state == TransitionState.OK;
             if (!freeRotate)
-                path.CheckPos.Frame.InterpolateRotation(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps);
+                path.CheckPos.Frame.SetRotation(_interpolation.Between(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps));
 
             CollisionInfo.SlidingNormalValid = false;
             CollisionInfo.ClearContactPlane();
@@ -168,38 +170,15 @@ internal sealed partial class Transition
     private bool IsViewer => (ObjectInfo.State & ObjectInfoState.IsViewer) != 0;
 
     /// <summary>
-    /// Retail adjust_offset: constrains a sub-step's motion by the sliding normal and the contact plane,
-    /// and lifts the check position back onto the contact plane when it has sunk into it.
+    /// Retail adjust_offset: constrains a sub-step's motion by the sliding normal and the contact plane
+    /// (<see cref="ConstrainOffset"/>), and lifts the check position back onto the contact plane when it has
+    /// sunk into it.
     /// </summary>
     public Vector3 AdjustOffset(Vector3 offset)
     {
         var ci = CollisionInfo;
-        bool slide = false;
-        float slideAngle = Vector3.Dot(offset, ci.SlidingNormal);
-        if (ci.SlidingNormalValid)
-        {
-            if (slideAngle < 0.0f) slide = true;
-            else ci.SlidingNormalValid = false;
-        }
-        if (!ci.ContactPlaneValid)
-            return slide ? offset - ci.SlidingNormal * slideAngle : offset;
-
-        float planeAngle = Vector3.Dot(offset, ci.ContactPlane.Normal);
-        if (slide)
-        {
-            var along = Vector3.Cross(ci.ContactPlane.Normal, ci.SlidingNormal);
-            offset = VectorMath.NormalizeCheckSmall(ref along) ? Vector3.Zero : Vector3.Dot(along, offset) * along;
-        }
-        else if (planeAngle <= 0.0f)
-        {
-            offset -= ci.ContactPlane.Normal * planeAngle;
-        }
-        else
-        {
-            offset = VectorMath.SnapToPlane(ci.ContactPlane, offset);
-        }
-
-        if (ci.ContactPlaneCellId == 0 || ci.ContactPlaneIsWater)
+        offset = ConstrainOffset(offset, ref ci.SlidingNormalValid, ci.SlidingNormal, ci.ContactPlaneValid, ci.ContactPlane);
+        if (!ci.ContactPlaneValid || ci.ContactPlaneCellId == 0 || ci.ContactPlaneIsWater)
             return offset;
         var sphere = SpherePath.GlobalSphere[0];
         var blockOffset = LandDefs.BlockOffset(SpherePath.CheckPos.CellId, ci.ContactPlaneCellId);
@@ -210,6 +189,61 @@ internal sealed partial class Transition
         if (sphere.Radius > MathF.Abs(lift))
             SpherePath.AddOffsetToCheckPos(new Vector3(0, 0, lift));
         return offset;
+    }
+
+    /// <summary>
+    /// The first half of retail adjust_offset, which depends on nothing but its arguments: a motion into a
+    /// valid sliding normal slides along it (along the line where it meets the contact plane, when there is
+    /// one); otherwise a contact plane takes the part of the motion into it away, or bends a motion away
+    /// from it onto it. A sliding normal the motion does not go into stops being valid.
+    /// </summary>
+    internal static Vector3 ConstrainOffset(Vector3 offset, ref bool slidingNormalValid, Vector3 slidingNormal, bool contactPlaneValid, in Plane contactPlane)
+    {
+        bool slide = false;
+        float slideAngle = Vector3.Dot(offset, slidingNormal);
+        if (slidingNormalValid)
+        {
+            if (slideAngle < 0.0f) slide = true;
+            else slidingNormalValid = false;
+        }
+        if (!contactPlaneValid)
+            return slide ? offset - slidingNormal * slideAngle : offset;
+
+        float planeAngle = Vector3.Dot(offset, contactPlane.Normal);
+        if (slide)
+        {
+            var along = Vector3.Cross(contactPlane.Normal, slidingNormal);
+            return VectorMath.NormalizeCheckSmall(ref along) ? Vector3.Zero : Vector3.Dot(along, offset) * along;
+        }
+        if (planeAngle <= 0.0f)
+            return offset - contactPlane.Normal * planeAngle;
+        return VectorMath.SnapToPlane(contactPlane, offset);
+    }
+
+    /// <summary>
+    /// True when retail find_transitional_position would give up before its first sub-step is inserted:
+    /// the motion is cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps, or the first
+    /// sub-step's motion, constrained by the carried sliding normal and contact plane, is shorter than
+    /// EPSILON (a mover pushing into a wall it already slid against). Such a move fails and changes
+    /// nothing the caller sees, so the engine answers it without setting up the path (not retail; changes
+    /// no result). Never true for the camera, whose last sub-step differs.
+    /// </summary>
+    internal bool RefusesBeforeFirstStep(MoverDescription mover, in MoverState state, in Position begin, in Position end)
+    {
+        if ((mover.Flags & ObjectInfoState.IsViewer) != 0 || mover.Spheres.Length == 0)
+            return false;
+        var offset = begin.GetOffset(end);
+        // The radius as SpherePath.InitSphere scales it.
+        float radius = mover.Spheres[0].Radius * mover.Scale;
+        int numSteps = CalcNumSteps(offset, radius * _subStepScale, false, out var perStep);
+        if (numSteps > PhysicsConstants.MaxSubSteps)
+            return true;
+        if (numSteps <= 0)
+            return false;
+        bool slidingValid = state.SlidingNormalValid;
+        var sliding = slidingValid ? CollisionInfo.HorizontalUnit(state.SlidingNormal) : Vector3.Zero;
+        var first = ConstrainOffset(perStep, ref slidingValid, sliding, state.Contact, state.ContactPlane);
+        return first.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
     }
 
     /// <summary>
@@ -313,6 +347,7 @@ internal sealed partial class Transition
     /// Retail Frame::is_equal: the same within EPSILON on every origin axis and quaternion component
     /// (acclient MasterProperty.c:1794); the cell ids must match.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool PositionsEqual(in Position a, in Position b)
     {
         if (a.CellId != b.CellId)

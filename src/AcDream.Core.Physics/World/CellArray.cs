@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using System.Collections.Generic;
 
 namespace AcDream.Core.Physics.World;
@@ -18,6 +19,7 @@ internal sealed class CellArray
     public void Clear() => _cells.Clear();
 
     /// <summary>Adds a cell unless present.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public void Add(Cell cell)
     {
         for (int i = 0; i < _cells.Count; i++)

@@ -17,6 +17,11 @@ public sealed class CellGraph
 {
     private readonly Dictionary<uint, Cell> _cells = new();
 
+    // The outdoor cells again, by landblock x byte, then y byte, then cell index − 1: the cell search and
+    // the per-frame checks look land cells up several times per transition, and two array reads are
+    // cheaper than a hash lookup. Filled when a landblock is added; never changed after.
+    private readonly LandCell[]?[]?[] _landBlocks = new LandCell[]?[]?[256];
+
     /// <summary>
     /// Adds a land block's 64 outdoor cells built from its terrain. All or nothing: a landblock already in
     /// the world or a cell that cannot be built throws before any cell is added.
@@ -36,6 +41,8 @@ public sealed class CellGraph
             built[i - 1] = new LandCell((terrain.Landblock << 16) | i, terrain);
         foreach (var land in built)
             _cells.Add(land.Id, land);
+        var column = _landBlocks[(terrain.Landblock >> 8) & 0xFF] ??= new LandCell[]?[256];
+        column[terrain.Landblock & 0xFF] = built;
     }
 
     /// <summary>Adds an env cell. Its portals may name cells added later.</summary>
@@ -61,7 +68,13 @@ public sealed class CellGraph
     }
 
     /// <summary>The cell with this id, or null.</summary>
-    public Cell? Get(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
+    public Cell? Get(uint cellId)
+    {
+        uint index = (cellId & 0xFFFF) - 1;
+        if (index < 64)
+            return _landBlocks[cellId >> 24]?[(cellId >> 16) & 0xFF]?[index];
+        return _cells.TryGetValue(cellId, out var cell) ? cell : null;
+    }
 
     /// <summary>The cell with this id; throws naming the id when unknown.</summary>
     internal Cell GetRequired(uint cellId, string field) =>

@@ -49,6 +49,8 @@ public sealed class LandCell : Cell
         float size = PhysicsConstants.LandCellLength;
         float dx = System.MathF.Max(System.MathF.Max(corner.X - point.X, point.X - (corner.X + size)), 0f);
         float dy = System.MathF.Max(System.MathF.Max(corner.Y - point.Y, point.Y - (corner.Y + size)), 0f);
+        if (dx == 0f && dy == 0f)
+            return 0f; // inside: the usual case, without the square root
         return System.MathF.Sqrt(dx * dx + dy * dy);
     }
 

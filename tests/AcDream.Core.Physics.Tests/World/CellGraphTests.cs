@@ -89,4 +89,23 @@ public class CellGraphTests
         Assert.Contains("0xA9B40105", ex.Message);
         Assert.Throws<ArgumentException>(() => world.Cells.AddLandblock(Terrain.Flat(TestGeometry.Landblock, 0)));
     }
+
+    [Fact]
+    public void LandCells_AreFoundByIdInTheirOwnLandblockOnly()
+    {
+        var world = TestGeometry.FlatWorld();
+        world.Cells.AddLandblock(Terrain.Flat(0x0102, 0));
+        for (uint index = 1; index <= 64; index++)
+        {
+            Assert.Equal(0xA9B40000 | index, world.Cells.Get(0xA9B40000 | index)!.Id);
+            Assert.Equal(0x01020000 | index, world.Cells.Get(0x01020000 | index)!.Id);
+        }
+        // Neighbouring landblocks not added, cell index 0 and indices past 64 (not land cells).
+        Assert.Null(world.Cells.Get(0xA9B50001));
+        Assert.Null(world.Cells.Get(0xAAB40001));
+        Assert.Null(world.Cells.Get(0x01030001));
+        Assert.Null(world.Cells.Get(0xA9B40000));
+        Assert.Null(world.Cells.Get(0xA9B40041));
+        Assert.Null(world.Cells.Get(0xA9B40100));
+    }
 }

@@ -1,0 +1,54 @@
+using System;
+using System.Numerics;
+using System.Runtime.Intrinsics;
+
+namespace AcDream.Core.Physics.Transitions;
+
+/// <summary>
+/// The last move an engine refused before its first sub-step (see
+/// <see cref="Transition.RefusesBeforeFirstStep"/>), to answer the same request again without redoing
+/// the work (not retail; changes no result). A client whose player pushes into a wall sends the very
+/// same request every frame: the state the refusal handed back, and the same step towards the wall.
+/// The refusal depends only on the request: the mover (immutable), its state, the target and the
+/// engine's sub-step scale. The input checks passed for it and still pass, since the world never
+/// removes a cell, and no object or cell geometry is consulted before the first sub-step.
+/// </summary>
+internal struct RefusalMemo
+{
+    private bool _valid;
+    private MoverDescription? _mover;
+    private MoverState _state;
+    private Position _target;
+
+    /// <summary>Forgets the refusal (the engine's settings changed).</summary>
+    public void Clear()
+    {
+        _valid = false;
+        _mover = null;
+    }
+
+    /// <summary>Remembers a refused request.</summary>
+    public void Remember(MoverDescription mover, in MoverState state, in Position target)
+    {
+        _mover = mover;
+        _state = state;
+        _target = target;
+        _valid = true;
+    }
+
+    /// <summary>True when this request is, bit for bit, the one last refused.</summary>
+    public readonly bool Matches(MoverDescription mover, in MoverState state, in Position target) =>
+        _valid && ReferenceEquals(mover, _mover) && SameBits(target, _target) && SameBits(state, _state);
+
+    private static bool SameBits(in MoverState a, in MoverState b) =>
+        SameBits(a.Position, b.Position)
+        && a.Contact == b.Contact && a.OnWalkable == b.OnWalkable
+        && a.ContactPlaneCellId == b.ContactPlaneCellId && a.ContactPlaneIsWater == b.ContactPlaneIsWater
+        && Bits(a.ContactPlane.Normal, a.ContactPlane.D).Equals(Bits(b.ContactPlane.Normal, b.ContactPlane.D))
+        && a.SlidingNormalValid == b.SlidingNormalValid
+        && Bits(a.SlidingNormal, 0f).Equals(Bits(b.SlidingNormal, 0f));
+
+    private static bool SameBits(in Position a, in Position b) => SpherePath.SameBits(a, b);
+
+    private static Vector128<int> Bits(Vector3 v, float w) => new Vector4(v, w).AsVector128().AsInt32();
+}

@@ -1,0 +1,35 @@
+using System.Numerics;
+using System.Runtime.Intrinsics;
+
+namespace AcDream.Core.Physics.Transitions;
+
+/// <summary>
+/// The last rotation interpolated between two orientations (not retail; changes no result). Each
+/// sub-step turns the check position part of the way from the begin to the end orientation (retail
+/// Frame::interpolate_rotation, normalized in double); a mover that keeps its heading, or moves in one
+/// sub-step per frame, asks for the same inputs frame after frame, and the result is a pure function of
+/// their bits.
+/// </summary>
+internal sealed class RotationInterpolationMemo
+{
+    private Vector128<int> _from, _to;
+    private float _t;
+    private Quaternion _result;
+    private bool _valid;
+
+    /// <summary>Bit for bit <see cref="Frame.InterpolatedRotation"/> of the same arguments.</summary>
+    public Quaternion Between(in Frame from, in Frame to, float t)
+    {
+        var fromKey = from.Orientation.AsVector128().AsInt32();
+        var toKey = to.Orientation.AsVector128().AsInt32();
+        if (!_valid || !fromKey.Equals(_from) || !toKey.Equals(_to) || System.BitConverter.SingleToInt32Bits(t) != System.BitConverter.SingleToInt32Bits(_t))
+        {
+            _result = Frame.InterpolatedRotation(from, to, t);
+            _from = fromKey;
+            _to = toKey;
+            _t = t;
+            _valid = true;
+        }
+        return _result;
+    }
+}

@@ -1,0 +1,201 @@
+using AcDream.Core.Physics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Tests.Support;
+
+namespace AcDream.Core.Physics.Tests.Transitions;
+
+/// <summary>
+/// Moves refused before their first sub-step (a mover pushing into the wall it already slid against) and
+/// the engine's memory of the last such refusal (not retail; neither changes a result): what a refusal
+/// returns, which moves are not refused, and which changes to a request are not answered from memory.
+/// The door's front face is at y = 100 − 0.009 = 99.991, so the retail player (r 0.48) stops with its
+/// centre at y = 99.511 and a ball of radius 0.1 at y = 99.891.
+/// </summary>
+public class RefusedMoveTests
+{
+    private const float PlayerStopY = 100f - 0.009f - 0.48f;
+    private const float BallStopY = 100f - 0.009f - 0.1f;
+    private static readonly Vector3 HeadOn = new(0, 2f / 30f, 0);
+
+    private static MoverDescription Ball() => new(0x5000_0002, [new Sphere(new Vector3(0, 0, 0.1f), 0.1f)], 0.2f, 0.04f);
+
+    /// <summary>The player walked head-on into the door until it stands against it with a sliding normal.</summary>
+    private static Mover PlayerAgainstTheDoor(PhysicsWorld world)
+    {
+        var player = TestScenes.Player(world, 100, PlayerStopY - 0.2f, MoverDescription.Player());
+        player.Walk(HeadOn, 4);
+        Assert.Equal(PlayerStopY, player.Origin.Y, 3e-3f);
+        Assert.True(player.State.SlidingNormalValid, "the stop leaves a sliding normal");
+        return player;
+    }
+
+    private static Position Ahead(in MoverState state, Vector3 offset)
+    {
+        var target = state.Position;
+        target.Frame.Origin += offset;
+        return target;
+    }
+
+    [Fact]
+    public void PushingIntoTheWallAlreadySlidAgainst_IsRefused_AndChangesNothing()
+    {
+        var world = TestScenes.Door();
+        var player = PlayerAgainstTheDoor(world);
+        var engine = new PhysicsEngine(world);
+        var state = player.State;
+
+        for (int frame = 0; frame < 3; frame++)
+        {
+            var result = engine.Resolve(player.Description, state, Ahead(state, HeadOn));
+            Assert.False(result.Succeeded, $"frame {frame}: the push is refused");
+            Assert.Equal(TransitionState.Collided, result.LastState);
+            Assert.Equal(state.Position, result.Next.Position);
+            Assert.Equal(state.SlidingNormal, result.Next.SlidingNormal);
+            Assert.True(result.Next.SlidingNormalValid);
+            Assert.False(result.CollisionNormalValid, $"frame {frame}: nothing was inserted, so nothing was hit");
+            Assert.Equal(0, result.CollidedObjects.Length);
+            Assert.False(result.VelocityKilled);
+            state = result.Next;
+        }
+    }
+
+    [Fact]
+    public void SlidingAlongTheWall_AfterStoppingAgainstIt_IsNotRefused()
+    {
+        var world = TestScenes.Door();
+        var player = PlayerAgainstTheDoor(world);
+        float x = player.Origin.X;
+
+        player.Walk(new Vector3(0.05f, 0.05f, 0), 3);
+
+        Assert.All(player.Frames.TakeLast(3), f => Assert.True(f.Result.Succeeded));
+        // Only the part along the face is kept: 0.05 m east per frame, none north.
+        Assert.Equal(x + 0.15f, player.Origin.X, 2e-3f);
+        Assert.Equal(PlayerStopY, player.Origin.Y, 3e-3f);
+    }
+
+    [Fact]
+    public void TheSameRequestWithoutItsSlidingNormal_IsNotAnsweredFromTheLastRefusal()
+    {
+        var world = TestScenes.Door();
+        var player = PlayerAgainstTheDoor(world);
+        var engine = new PhysicsEngine(world);
+        var state = player.State;
+        Assert.False(engine.Resolve(player.Description, state, Ahead(state, HeadOn)).Succeeded);
+
+        var withoutNormal = state;
+        withoutNormal.SlidingNormalValid = false;
+        withoutNormal.SlidingNormal = Vector3.Zero;
+        var result = engine.Resolve(player.Description, withoutNormal, Ahead(withoutNormal, HeadOn));
+
+        // Inserted this time: the door is hit and reported.
+        Assert.Contains(TestScenes.DoorId, result.CollidedObjects.ToArray());
+        Assert.True(result.Next.SlidingNormalValid, "the hit gives the sliding normal back");
+    }
+
+    [Fact]
+    public void AnotherMoverWithTheSameRequest_IsNotAnsweredFromTheLastRefusal()
+    {
+        var world = TestScenes.Door();
+        var player = PlayerAgainstTheDoor(world);
+        var engine = new PhysicsEngine(world);
+        var state = player.State;
+        var target = Ahead(state, HeadOn);
+        Assert.False(engine.Resolve(player.Description, state, target).Succeeded);
+
+        // The camera's sphere is never refused before its first sub-step (retail returns early only for
+        // movers that are not the viewer): its cancelled step is inserted where it stands, and succeeds.
+        var viewer = new MoverDescription(0, [new Sphere(new Vector3(0, 0, 0.475f), 0.48f)], 0f, 0f,
+            PhysicsState.None, ObjectInfoState.IsViewer);
+        var result = engine.Resolve(viewer, state, target);
+        Assert.True(result.Succeeded, "the viewer is inserted, not refused");
+        Assert.Equal(state.Position.Origin, result.Next.Position.Origin);
+    }
+
+    [Fact]
+    public void AChangedSubStepScale_IsNotAnsweredFromTheLastRefusal()
+    {
+        var world = TestGeometry.FlatWorld();
+        var player = TestScenes.Player(world, 100, 100, MoverDescription.Player());
+        var engine = new PhysicsEngine(world);
+        var state = player.State;
+        var target = Ahead(state, new Vector3(0, 0.5f, 0));
+
+        // 0.5 m in steps of 0.48 × 0.0005 m is more than MaxSubSteps (1,000): refused at once, as retail.
+        engine.SubStepScale = 0.0005f;
+        Assert.False(engine.Resolve(player.Description, state, target).Succeeded);
+
+        engine.SubStepScale = 1f;
+        var result = engine.Resolve(player.Description, state, target);
+        Assert.True(result.Succeeded, "with retail's sub-steps the same request moves");
+        Assert.Equal(100.5f, result.Next.Position.Origin.Y, 1e-4f);
+    }
+
+    [Fact]
+    public void TwoMoversResolvedInTurnByOneEngine_EachStopAtTheirOwnDistance()
+    {
+        // The engine keeps the spheres of the position a move ended at for the next move; a different
+        // mover at a different position must never be given them.
+        var world = TestScenes.Door();
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player();
+        var ball = Ball();
+        var playerState = MoverState.OnFloor(TestGeometry.At(100, PlayerStopY - 0.2f, 0), 0f);
+        var ballState = MoverState.OnFloor(TestGeometry.At(100, BallStopY - 0.2f, 0), 0f);
+
+        for (int frame = 0; frame < 8; frame++)
+        {
+            playerState = engine.Resolve(player, playerState, Ahead(playerState, HeadOn)).Next;
+            ballState = engine.Resolve(ball, ballState, Ahead(ballState, HeadOn)).Next;
+        }
+
+        Assert.Equal(PlayerStopY, playerState.Position.Origin.Y, 3e-3f);
+        Assert.Equal(BallStopY, ballState.Position.Origin.Y, 3e-3f);
+    }
+}
+
+/// <summary>
+/// Work the engine keeps from one move or sub-step to the next (not retail; changes no result): the spheres
+/// at the last current position, and the last interpolated rotation.
+/// </summary>
+public class RememberedWorkTests
+{
+    [Fact]
+    public void AnotherMoverStartingWhereTheLastMoveStarted_GetsItsOwnSpheres()
+    {
+        var path = new AcDream.Core.Physics.Transitions.SpherePath();
+        var start = TestGeometry.At(100, 100, 0);
+
+        // Two one-sphere movers with the same lowest point (the sphere's foot at the origin) and different spheres.
+        path.Reset();
+        path.InitSphere([new Sphere(new Vector3(0, 0, 0.5f), 0.5f)], 1f);
+        path.InitPath(null, in start, in start);
+        Assert.Equal(new Vector3(100, 100, 0.5f), path.GlobalCurrCenter[0].Center);
+
+        path.Reset();
+        path.InitSphere([new Sphere(new Vector3(0, 0, 0.3f), 0.3f)], 1f);
+        path.InitPath(null, in start, in start);
+
+        Assert.Equal(new Vector3(100, 100, 0.3f), path.GlobalCurrCenter[0].Center);
+        Assert.Equal(0.3f, path.GlobalCurrCenter[0].Radius);
+    }
+
+    [Fact]
+    public void AMoverTurningAsItMoves_EndsFacingTheTarget()
+    {
+        // 2 m in sub-steps of one radius (5 sub-steps), turning a quarter turn about Z: each sub-step
+        // turns part of the way (retail interpolate_rotation), and the last one reaches the target's.
+        var engine = new PhysicsEngine(TestGeometry.FlatWorld());
+        var start = MoverState.OnFloor(TestGeometry.At(100, 100, 0), 0f);
+        var quarter = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 2);
+        var target = new Position(start.Position.CellId, new Frame(new Vector3(102, 100, 0), quarter));
+
+        var result = engine.Resolve(MoverDescription.Player(), start, target);
+
+        Assert.True(result.Succeeded);
+        var q = result.Next.Position.Frame.Orientation;
+        Assert.Equal(quarter.Z, q.Z, 1e-6f);
+        Assert.Equal(quarter.W, q.W, 1e-6f);
+        Assert.Equal(102f, result.Next.Position.Origin.X, 1e-4f);
+    }
+}
