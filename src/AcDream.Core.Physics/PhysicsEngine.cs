@@ -97,16 +97,17 @@ public sealed partial class PhysicsEngine
     internal World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
     {
         var cells = _transition.World.Cells;
-        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        // GetRequired only to throw its error: the lookup alone inlines.
+        var cell = cells.Get(begin.CellId) ?? cells.GetRequired(begin.CellId, "state.position.cell");
         Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
-        if (targetCellId != begin.CellId)
+        if (targetCellId != begin.CellId && cells.Get(targetCellId) is null)
             cells.GetRequired(targetCellId, "target.cell");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
             Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
             Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
             uint planeCell = state.ContactPlaneCellId;
-            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId)
+            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId && cells.Get(planeCell) is null)
                 cells.GetRequired(planeCell, "state.contactPlaneCellId");
         }
         if (state.SlidingNormalValid)
