@@ -20,7 +20,7 @@ internal sealed class RotationMatrixMemo
     private RotationMatrixLanes _lanes;
 
     /// <summary>The matrix of <paramref name="frame"/>'s orientation: bit for bit <see cref="Frame.Matrix"/>.</summary>
-    public RotationMatrix Of(in Frame frame)
+    public ref readonly RotationMatrix Of(in Frame frame)
     {
         var key = frame.Orientation.AsVector128().AsInt32();
         if (!_valid || !key.Equals(_for))
@@ -31,7 +31,7 @@ internal sealed class RotationMatrixMemo
             _upValid = false;
             _lanes = new RotationMatrixLanes(_matrix);
         }
-        return _matrix;
+        return ref _matrix;
     }
 
     /// <summary>The matrix of <paramref name="frame"/>'s orientation, widened for side-by-side transforms.</summary>

@@ -326,6 +326,12 @@ internal sealed class SpherePath
         LocalSpaceZ = _spaceMatrix.LocalUp();
     }
 
+    /// <summary>
+    /// The matrix of the space last prepared by <see cref="CacheLocalSpaceSphere"/> (<see cref="LocalSpacePos"/>'s
+    /// orientation), remembered: the BSP queries turn normals and offsets back through it.
+    /// </summary>
+    public ref readonly RotationMatrix LocalSpaceMatrix => ref _spaceMatrix.Of(LocalSpacePos.Frame);
+
     /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>
     private struct FreshCentres
     {
