@@ -193,11 +193,11 @@ internal static class ObjectCollisions
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
                 path.CacheLocalSpaceSphere(row.Position, 1.0f);
                 var cyl = shape.Cylinder;
-                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
+                cyl.LowPoint = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
                 return CylSphereCollision.IntersectsSphere(cyl, transition);
             default:
                 var sphere = shape.Sphere;
-                sphere.Center = row.Position.LocalToGlobal(sphere.Center) + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
+                sphere.Center = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
                 return SphereCollision.IntersectsSphere(sphere, transition, isCreature);
         }
     }
