@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
@@ -68,13 +69,17 @@ public sealed class CellGraph
     }
 
     /// <summary>The cell with this id, or null.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Cell? Get(uint cellId)
     {
         uint index = (cellId & 0xFFFF) - 1;
         if (index < 64)
             return _landBlocks[cellId >> 24]?[(cellId >> 16) & 0xFF]?[index];
-        return _cells.TryGetValue(cellId, out var cell) ? cell : null;
+        return GetIndoor(cellId);
     }
+
+    // Apart so that Get inlines: the land path is two array reads.
+    private Cell? GetIndoor(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
 
     /// <summary>The cell with this id; throws naming the id when unknown.</summary>
     internal Cell GetRequired(uint cellId, string field) =>
@@ -91,12 +96,13 @@ public sealed class CellGraph
     internal Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, SpherePath? path)
     {
         cells.Clear();
-        var start = Get(position.CellId);
+        uint startId = position.CellId;
+        var start = Get(startId);
         // Retail adds the outside cells again for every land cell in the list (and for each indoor cell with
         // a portal to the outside near a sphere); they depend only on the spheres, so every call after the
         // first adds nothing. Remember that they are in.
         bool outsideAdded = false;
-        if (!LandDefs.IsLandCell(position.CellId))
+        if (!LandDefs.IsLandCell(startId))
         {
             if (path is not null) path.HitsInteriorCell = true;
             if (start is not null) cells.Add(start);
@@ -110,28 +116,31 @@ public sealed class CellGraph
             return null;
 
         for (int i = 0; i < cells.Count; i++)
-            AddTransitCells(cells[i], position, spheres, cells, path, ref outsideAdded);
+        {
+            var cell = cells[i];
+            // Once the outside cells are in, a land cell without a building adds nothing.
+            if (outsideAdded && cell is LandCell { Building: null })
+                continue;
+            AddTransitCells(cell, position, spheres, cells, path, ref outsideAdded);
+        }
 
         if (!findContaining)
             return null;
+        // The last land cell holding sphere 0's centre, unless an indoor cell holds it first.
+        var centre = spheres[0].Center;
         Cell? containing = null;
         for (int i = 0; i < cells.Count; i++)
         {
             var cell = cells[i];
-            var point = spheres[0].Center - LandDefs.BlockOffset(position.CellId, cell.Id);
-            bool inside = cell switch
+            if (cell is LandCell land)
             {
-                EnvCell env => env.ContainsPoint(point),
-                LandCell land => land.ContainsPoint(point),
-                _ => false,
-            };
-            if (!inside)
-                continue;
-            containing = cell;
-            if (cell is EnvCell)
+                if (land.ContainsPoint(centre - LandDefs.BlockOffset(startId, land.Id)))
+                    containing = land;
+            }
+            else if (cell is EnvCell env && env.ContainsPoint(centre - LandDefs.BlockOffset(startId, env.Id)))
             {
                 if (path is not null) path.HitsInteriorCell = true;
-                break;
+                return env;
             }
         }
         return containing;
@@ -200,8 +209,13 @@ public sealed class CellGraph
     {
         uint block = position.CellId >> 16;
         int blockX = (int)(block >> 8) * 8, blockY = (int)(block & 0xFF) * 8;
-        foreach (var sphere in spheres)
+        for (int i = 0; i < spheres.Length; i++)
         {
+            var sphere = spheres[i];
+            // A sphere over the one before it (the same X, Y and radius, to the bit) adds the same cells again,
+            // which are all in already: the player's two stacked spheres.
+            if (i > 0 && SameColumn(sphere, spheres[i - 1]))
+                continue;
             float fx = MathF.Floor(sphere.Center.X / PhysicsConstants.LandCellLength);
             float fy = MathF.Floor(sphere.Center.Y / PhysicsConstants.LandCellLength);
             if (!float.IsFinite(fx) || !float.IsFinite(fy))
@@ -228,10 +242,18 @@ public sealed class CellGraph
         }
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool SameColumn(in Sphere a, in Sphere b) =>
+        BitConverter.SingleToInt32Bits(a.Center.X) == BitConverter.SingleToInt32Bits(b.Center.X)
+        && BitConverter.SingleToInt32Bits(a.Center.Y) == BitConverter.SingleToInt32Bits(b.Center.Y)
+        && BitConverter.SingleToInt32Bits(a.Radius) == BitConverter.SingleToInt32Bits(b.Radius);
+
+    /// <summary>Adds the loaded land cell at global cell coordinates (gx, gy) (<see cref="LandDefs.LandCellAtGlobal"/>), if any.</summary>
     private void AddOutsideCell(CellArray cells, int gx, int gy)
     {
-        uint id = LandDefs.LandCellAtGlobal(gx, gy);
-        if (id != 0 && Get(id) is { } cell)
+        if ((uint)gx >= LandDefs.CellsPerSide || (uint)gy >= LandDefs.CellsPerSide)
+            return;
+        if (_landBlocks[gx >> 3]?[gy >> 3]?[(gx & 7) * 8 + (gy & 7)] is { } cell)
             cells.Add(cell);
     }
 }
