@@ -43,12 +43,15 @@ internal sealed class CellArray
     {
         var entries = _entries;
         int count = _count;
-        for (int i = 0; i < count && i < entries.Length; i++)
-            if (ReferenceEquals(entries[i].Cell, cell))
+        foreach (ref readonly var entry in new ReadOnlySpan<Entry>(entries, 0, count))
+            if (ReferenceEquals(entry.Cell, cell))
                 return;
         if (count < entries.Length)
         {
-            entries[count].Cell = cell;
+            // The slot often holds this cell already from the previous search (Clear leaves it): then the
+            // store, and its GC write barrier, is skipped.
+            if (!ReferenceEquals(entries[count].Cell, cell))
+                entries[count].Cell = cell;
             _count = count + 1;
             return;
         }

@@ -109,42 +109,51 @@ public sealed class CellGraph
         }
         else
         {
-            AddOutsideCells(position, spheres, cells);
+            AddOutsideCells(startId, spheres, cells);
             outsideAdded = true;
         }
         if (start is null || spheres.Length == 0)
             return null;
 
-        for (int i = 0; i < cells.Count; i++)
-        {
-            var cell = cells[i];
-            // Once the outside cells are in, a land cell without a building adds nothing.
-            if (outsideAdded && cell is LandCell { Building: null })
-                continue;
-            AddTransitCells(cell, position, spheres, cells, path, ref outsideAdded);
-        }
-
-        if (!findContaining)
-            return null;
-        // The last land cell holding sphere 0's centre, unless an indoor cell holds it first.
+        // One pass: the transit step of each cell (the list grows as it goes), and, for land cells, whether
+        // they hold sphere 0's centre. The holder is the first indoor cell in the list that holds the centre,
+        // else the last land cell that does; indoor cells are tested after the list is complete.
         var centre = spheres[0].Center;
-        Cell? containing = null;
+        LandCell? landHolder = null;
+        bool anyIndoor = false;
         for (int i = 0; i < cells.Count; i++)
         {
             var cell = cells[i];
             if (cell is LandCell land)
             {
-                if (land.ContainsPoint(centre - LandDefs.BlockOffset(startId, land.Id)))
-                    containing = land;
+                if (findContaining && land.ContainsPoint(centre - LandDefs.BlockOffset(startId, land.Id)))
+                    landHolder = land;
+                // Once the outside cells are in, a land cell without a building adds nothing.
+                if (outsideAdded && land.Building is null)
+                    continue;
             }
-            else if (cell is EnvCell env && env.ContainsPoint(centre - LandDefs.BlockOffset(startId, env.Id)))
+            else
             {
-                if (path is not null) path.HitsInteriorCell = true;
-                return env;
+                anyIndoor = true;
             }
+            AddTransitCells(cell, position, spheres, cells, path, ref outsideAdded);
         }
-        return containing;
+        if (!findContaining)
+            return null;
+        if (anyIndoor)
+            for (int i = 0; i < cells.Count; i++)
+                if (cells[i] is EnvCell env && ContainsCentre(env, centre, startId))
+                {
+                    if (path is not null) path.HitsInteriorCell = true;
+                    return env;
+                }
+        return landHolder;
     }
+
+    // Apart so that the land path of FindCellList stays small (no rotation matrix in its frame).
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static bool ContainsCentre(EnvCell env, Vector3 centre, uint startId) =>
+        env.ContainsPoint(centre - LandDefs.BlockOffset(startId, env.Id));
 
     private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path, ref bool outsideAdded)
     {
@@ -152,7 +161,7 @@ public sealed class CellGraph
         {
             if (!outsideAdded)
             {
-                AddOutsideCells(position, spheres, cells);
+                AddOutsideCells(position.CellId, spheres, cells);
                 outsideAdded = true;
             }
             if (land.Building is { } building)
@@ -183,7 +192,7 @@ public sealed class CellGraph
         }
         if (checkOutside && !outsideAdded)
         {
-            AddOutsideCells(position, spheres, cells);
+            AddOutsideCells(position.CellId, spheres, cells);
             outsideAdded = true;
         }
     }
@@ -205,41 +214,50 @@ public sealed class CellGraph
     /// Retail add_all_outside_cells: the outdoor cell under each sphere centre plus the neighbours the
     /// sphere reaches across a cell border (check_add_cell_boundary), across landblocks too.
     /// </summary>
-    private void AddOutsideCells(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void AddOutsideCells(uint startId, ReadOnlySpan<Sphere> spheres, CellArray cells)
     {
-        uint block = position.CellId >> 16;
+        uint block = startId >> 16;
         int blockX = (int)(block >> 8) * 8, blockY = (int)(block & 0xFF) * 8;
         for (int i = 0; i < spheres.Length; i++)
         {
-            var sphere = spheres[i];
             // A sphere over the one before it (the same X, Y and radius, to the bit) adds the same cells again,
             // which are all in already: the player's two stacked spheres.
-            if (i > 0 && SameColumn(sphere, spheres[i - 1]))
+            if (i > 0 && SameColumn(spheres[i], spheres[i - 1]))
                 continue;
-            float fx = MathF.Floor(sphere.Center.X / PhysicsConstants.LandCellLength);
-            float fy = MathF.Floor(sphere.Center.Y / PhysicsConstants.LandCellLength);
+            float x = spheres[i].Center.X, y = spheres[i].Center.Y, radius = spheres[i].Radius;
+            float fx = MathF.Floor(x / PhysicsConstants.LandCellLength);
+            float fy = MathF.Floor(y / PhysicsConstants.LandCellLength);
             if (!float.IsFinite(fx) || !float.IsFinite(fy))
                 continue;
             int gx = blockX + (int)fx, gy = blockY + (int)fy;
-            float px = sphere.Center.X - fx * PhysicsConstants.LandCellLength;
-            float py = sphere.Center.Y - fy * PhysicsConstants.LandCellLength;
-            float min = sphere.Radius, max = PhysicsConstants.LandCellLength - sphere.Radius;
-            AddOutsideCell(cells, gx, gy);
-            if (px > max)
-            {
-                AddOutsideCell(cells, gx + 1, gy);
-                if (py > max) AddOutsideCell(cells, gx + 1, gy + 1);
-                if (py < min) AddOutsideCell(cells, gx + 1, gy - 1);
-            }
-            if (px < min)
-            {
-                AddOutsideCell(cells, gx - 1, gy);
-                if (py > max) AddOutsideCell(cells, gx - 1, gy + 1);
-                if (py < min) AddOutsideCell(cells, gx - 1, gy - 1);
-            }
-            if (py > max) AddOutsideCell(cells, gx, gy + 1);
-            if (py < min) AddOutsideCell(cells, gx, gy - 1);
+            float px = x - fx * PhysicsConstants.LandCellLength;
+            float py = y - fy * PhysicsConstants.LandCellLength;
+            float min = radius, max = PhysicsConstants.LandCellLength - radius;
+            if (LandAtGlobal(gx, gy) is { } centre)
+                cells.Add(centre);
+            if (px > max || px < min || py > max || py < min)
+                AddNeighbours(cells, gx, gy, px, py, min, max);
         }
+    }
+
+    /// <summary>The cells beside (gx, gy) that a sphere at (px, py) in it reaches (check_add_cell_boundary), in retail's order.</summary>
+    private void AddNeighbours(CellArray cells, int gx, int gy, float px, float py, float min, float max)
+    {
+        if (px > max)
+        {
+            AddOutsideCell(cells, gx + 1, gy);
+            if (py > max) AddOutsideCell(cells, gx + 1, gy + 1);
+            if (py < min) AddOutsideCell(cells, gx + 1, gy - 1);
+        }
+        if (px < min)
+        {
+            AddOutsideCell(cells, gx - 1, gy);
+            if (py > max) AddOutsideCell(cells, gx - 1, gy + 1);
+            if (py < min) AddOutsideCell(cells, gx - 1, gy - 1);
+        }
+        if (py > max) AddOutsideCell(cells, gx, gy + 1);
+        if (py < min) AddOutsideCell(cells, gx, gy - 1);
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -248,12 +266,18 @@ public sealed class CellGraph
         && BitConverter.SingleToInt32Bits(a.Center.Y) == BitConverter.SingleToInt32Bits(b.Center.Y)
         && BitConverter.SingleToInt32Bits(a.Radius) == BitConverter.SingleToInt32Bits(b.Radius);
 
-    /// <summary>Adds the loaded land cell at global cell coordinates (gx, gy) (<see cref="LandDefs.LandCellAtGlobal"/>), if any.</summary>
     private void AddOutsideCell(CellArray cells, int gx, int gy)
     {
-        if ((uint)gx >= LandDefs.CellsPerSide || (uint)gy >= LandDefs.CellsPerSide)
-            return;
-        if (_landBlocks[gx >> 3]?[gy >> 3]?[(gx & 7) * 8 + (gy & 7)] is { } cell)
+        if (LandAtGlobal(gx, gy) is { } cell)
             cells.Add(cell);
+    }
+
+    /// <summary>The loaded land cell at global cell coordinates (gx, gy) (<see cref="LandDefs.LandCellAtGlobal"/>), or null.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private LandCell? LandAtGlobal(int gx, int gy)
+    {
+        if ((uint)gx >= LandDefs.CellsPerSide || (uint)gy >= LandDefs.CellsPerSide)
+            return null;
+        return _landBlocks[gx >> 3]?[gy >> 3]?[(gx & 7) * 8 + (gy & 7)];
     }
 }
