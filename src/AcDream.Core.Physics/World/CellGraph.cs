@@ -18,10 +18,10 @@ public sealed class CellGraph
 {
     private readonly Dictionary<uint, Cell> _cells = new();
 
-    // The outdoor cells again, by landblock x byte, then y byte, then cell index − 1: the cell search and
-    // the per-frame checks look land cells up several times per transition, and two array reads are
-    // cheaper than a hash lookup. Filled when a landblock is added; never changed after.
-    private readonly LandCell[]?[]?[] _landBlocks = new LandCell[]?[]?[256];
+    // The outdoor cells again, by array: the cell search and the per-frame checks look land cells up
+    // several times per transition, and array reads are cheaper than a hash lookup. Filled when a
+    // landblock is added; never changed after.
+    private readonly CellTable<LandCell> _land = new();
 
     /// <summary>
     /// Adds a land block's 64 outdoor cells built from its terrain. All or nothing: a landblock already in
@@ -41,9 +41,10 @@ public sealed class CellGraph
         for (uint i = 1; i <= 64; i++)
             built[i - 1] = new LandCell((terrain.Landblock << 16) | i, terrain);
         foreach (var land in built)
+        {
             _cells.Add(land.Id, land);
-        var column = _landBlocks[(terrain.Landblock >> 8) & 0xFF] ??= new LandCell[]?[256];
-        column[terrain.Landblock & 0xFF] = built;
+            _land.Set(land.Id, land);
+        }
     }
 
     /// <summary>Adds an env cell. Its portals may name cells added later.</summary>
@@ -70,15 +71,9 @@ public sealed class CellGraph
 
     /// <summary>The cell with this id, or null.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public Cell? Get(uint cellId)
-    {
-        uint index = (cellId & 0xFFFF) - 1;
-        if (index < 64)
-            return _landBlocks[cellId >> 24]?[(cellId >> 16) & 0xFF]?[index];
-        return GetIndoor(cellId);
-    }
+    public Cell? Get(uint cellId) => (cellId & 0xFFFF) - 1 < 64 ? _land.Get(cellId) : GetIndoor(cellId);
 
-    // Apart so that Get inlines: the land path is two array reads.
+    // Apart so that Get inlines: the land path is array reads.
     private Cell? GetIndoor(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
 
     /// <summary>The cell with this id; throws naming the id when unknown.</summary>
@@ -234,7 +229,7 @@ public sealed class CellGraph
             float px = x - fx * PhysicsConstants.LandCellLength;
             float py = y - fy * PhysicsConstants.LandCellLength;
             float min = radius, max = PhysicsConstants.LandCellLength - radius;
-            if (LandAtGlobal(gx, gy) is { } centre)
+            if (_land.GetLandAtGlobal(gx, gy) is { } centre)
                 cells.Add(centre);
             if (px > max || px < min || py > max || py < min)
                 AddNeighbours(cells, gx, gy, px, py, min, max);
@@ -268,16 +263,7 @@ public sealed class CellGraph
 
     private void AddOutsideCell(CellArray cells, int gx, int gy)
     {
-        if (LandAtGlobal(gx, gy) is { } cell)
+        if (_land.GetLandAtGlobal(gx, gy) is { } cell)
             cells.Add(cell);
-    }
-
-    /// <summary>The loaded land cell at global cell coordinates (gx, gy) (<see cref="LandDefs.LandCellAtGlobal"/>), or null.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private LandCell? LandAtGlobal(int gx, int gy)
-    {
-        if ((uint)gx >= LandDefs.CellsPerSide || (uint)gy >= LandDefs.CellsPerSide)
-            return null;
-        return _landBlocks[gx >> 3]?[gy >> 3]?[(gx & 7) * 8 + (gy & 7)];
     }
 }
