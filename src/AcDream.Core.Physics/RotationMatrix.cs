@@ -45,6 +45,12 @@ internal readonly struct RotationMatrix
         _m8 = (float)(oneMinusXx2 - yy2);
     }
 
+    /// <summary>The nine elements, column by column (for <see cref="RotationMatrixLanes"/>).</summary>
+    internal void Elements(out float m0, out float m1, out float m2, out float m3, out float m4, out float m5, out float m6, out float m7, out float m8)
+    {
+        m0 = _m0; m1 = _m1; m2 = _m2; m3 = _m3; m4 = _m4; m5 = _m5; m6 = _m6; m7 = _m7; m8 = _m8;
+    }
+
     /// <summary>Frame::localtoglobalvec (acclient.c:143658): M·v, summed z, x, y.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 FrameToGlobal(Vector3 v) => new(

@@ -27,30 +27,37 @@ internal static class BspNodeQuery
     /// </summary>
     public static bool SphereIntersectsPoly(BspTree tree, int index, in Sphere checkPos, Vector3 movement, ref Polygon? hitPolygon, ref Vector3 contactPoint)
     {
-        if (index < 0)
-            return false;
-        ref readonly var node = ref tree.NodeArray[index];
-        if (node.IsLeaf)
+        // A walk down the tree; only a straddled split recurses (into its front), its back is the next step.
+        while (index >= 0)
         {
-            if (node.PolygonCount == 0 || !node.Bounds.Intersects(checkPos))
+            ref readonly var node = ref tree.NodeArray[index];
+            if (node.IsLeaf)
+            {
+                if (node.PolygonCount == 0 || !node.Bounds.Intersects(checkPos))
+                    return false;
+                var polygons = tree.PolygonArray;
+                var indices = tree.IndexArray;
+                for (int k = 0; k < node.PolygonCount; k++)
+                    if (PolygonQuery.PosHitsSphere(polygons[indices[node.FirstPolygon + k]], checkPos, movement, ref contactPoint, ref hitPolygon))
+                        return true;
                 return false;
-            var polygons = tree.PolygonArray;
-            var indices = tree.IndexArray;
-            for (int k = 0; k < node.PolygonCount; k++)
-                if (PolygonQuery.PosHitsSphere(polygons[indices[node.FirstPolygon + k]], checkPos, movement, ref contactPoint, ref hitPolygon))
+            }
+            if (!node.Bounds.Intersects(checkPos))
+                return false;
+            float distance = SplitDistance(node, checkPos.Center);
+            float reach = checkPos.Radius - Epsilon;
+            if (distance >= reach)
+                index = node.Front;
+            else if (distance <= -reach)
+                index = node.Back;
+            else
+            {
+                if (SphereIntersectsPoly(tree, node.Front, checkPos, movement, ref hitPolygon, ref contactPoint))
                     return true;
-            return false;
+                index = node.Back;
+            }
         }
-        if (!node.Bounds.Intersects(checkPos))
-            return false;
-        float distance = SplitDistance(node, checkPos.Center);
-        float reach = checkPos.Radius - Epsilon;
-        if (distance >= reach)
-            return SphereIntersectsPoly(tree, node.Front, checkPos, movement, ref hitPolygon, ref contactPoint);
-        if (distance <= -reach)
-            return SphereIntersectsPoly(tree, node.Back, checkPos, movement, ref hitPolygon, ref contactPoint);
-        return SphereIntersectsPoly(tree, node.Front, checkPos, movement, ref hitPolygon, ref contactPoint)
-            || SphereIntersectsPoly(tree, node.Back, checkPos, movement, ref hitPolygon, ref contactPoint);
+        return false;
     }
 
     /// <summary>
@@ -62,37 +69,44 @@ internal static class BspNodeQuery
     /// </summary>
     public static bool SphereIntersectsSolid(BspTree tree, int index, in Sphere checkPos, bool centerCheck)
     {
-        if (index < 0)
-            return false;
-        ref readonly var node = ref tree.NodeArray[index];
-        if (node.IsLeaf)
+        // A walk down the tree; only a straddled split recurses (into its front), its back is the next step.
+        while (index >= 0)
         {
-            if (node.PolygonCount == 0)
+            ref readonly var node = ref tree.NodeArray[index];
+            if (node.IsLeaf)
+            {
+                if (node.PolygonCount == 0)
+                    return false;
+                if (centerCheck && node.Solid)
+                    return true;
+                if (!node.Bounds.Intersects(checkPos))
+                    return false;
+                var polygons = tree.PolygonArray;
+                var indices = tree.IndexArray;
+                for (int k = 0; k < node.PolygonCount; k++)
+                    if (PolygonQuery.HitsSphere(polygons[indices[node.FirstPolygon + k]], checkPos))
+                        return true;
                 return false;
-            if (centerCheck && node.Solid)
-                return true;
+            }
             if (!node.Bounds.Intersects(checkPos))
                 return false;
-            var polygons = tree.PolygonArray;
-            var indices = tree.IndexArray;
-            for (int k = 0; k < node.PolygonCount; k++)
-                if (PolygonQuery.HitsSphere(polygons[indices[node.FirstPolygon + k]], checkPos))
+            float distance = SplitDistance(node, checkPos.Center);
+            float reach = checkPos.Radius - Epsilon;
+            if (distance >= reach)
+                index = node.Front;
+            else if (distance <= -reach)
+                index = node.Back;
+            else
+            {
+                // The centre check goes only to the side that holds the centre (front when on the plane).
+                bool centerInFront = distance >= 0f;
+                if (SphereIntersectsSolid(tree, node.Front, checkPos, centerCheck && centerInFront))
                     return true;
-            return false;
+                index = node.Back;
+                centerCheck = centerCheck && !centerInFront;
+            }
         }
-        if (!node.Bounds.Intersects(checkPos))
-            return false;
-        float distance = SplitDistance(node, checkPos.Center);
-        float reach = checkPos.Radius - Epsilon;
-        if (distance >= reach)
-            return SphereIntersectsSolid(tree, node.Front, checkPos, centerCheck);
-        if (distance <= -reach)
-            return SphereIntersectsSolid(tree, node.Back, checkPos, centerCheck);
-        if (distance < 0f)
-            return SphereIntersectsSolid(tree, node.Front, checkPos, false)
-                || SphereIntersectsSolid(tree, node.Back, checkPos, centerCheck);
-        return SphereIntersectsSolid(tree, node.Front, checkPos, centerCheck)
-            || SphereIntersectsSolid(tree, node.Back, checkPos, false);
+        return false;
     }
 
     /// <summary>
@@ -153,34 +167,41 @@ internal static class BspNodeQuery
     /// </summary>
     public static bool HitsWalkable(BspTree tree, int index, in Sphere validPos, Vector3 up, float walkableAllowance)
     {
-        if (index < 0)
-            return false;
-        ref readonly var node = ref tree.NodeArray[index];
-        if (node.IsLeaf)
+        // A walk down the tree; only a straddled split recurses (into its front), its back is the next step.
+        while (index >= 0)
         {
-            if (node.PolygonCount == 0 || !node.Bounds.Intersects(validPos))
-                return false;
-            var polygons = tree.PolygonArray;
-            var indices = tree.IndexArray;
-            for (int k = 0; k < node.PolygonCount; k++)
+            ref readonly var node = ref tree.NodeArray[index];
+            if (node.IsLeaf)
             {
-                var polygon = polygons[indices[node.FirstPolygon + k]];
-                if (PolygonQuery.WalkableHitsSphere(polygon, validPos, up, walkableAllowance)
-                    && PolygonQuery.CheckSmallWalkable(polygon, validPos, up))
-                    return true;
+                if (node.PolygonCount == 0 || !node.Bounds.Intersects(validPos))
+                    return false;
+                var polygons = tree.PolygonArray;
+                var indices = tree.IndexArray;
+                for (int k = 0; k < node.PolygonCount; k++)
+                {
+                    var polygon = polygons[indices[node.FirstPolygon + k]];
+                    if (PolygonQuery.WalkableHitsSphere(polygon, validPos, up, walkableAllowance)
+                        && PolygonQuery.CheckSmallWalkable(polygon, validPos, up))
+                        return true;
+                }
+                return false;
             }
-            return false;
+            if (!node.Bounds.Intersects(validPos))
+                return false;
+            float distance = SplitDistance(node, validPos.Center);
+            float reach = validPos.Radius - Epsilon;
+            if (distance >= reach)
+                index = node.Front;
+            else if (distance <= -reach)
+                index = node.Back;
+            else
+            {
+                if (HitsWalkable(tree, node.Front, validPos, up, walkableAllowance))
+                    return true;
+                index = node.Back;
+            }
         }
-        if (!node.Bounds.Intersects(validPos))
-            return false;
-        float distance = SplitDistance(node, validPos.Center);
-        float reach = validPos.Radius - Epsilon;
-        if (distance >= reach)
-            return HitsWalkable(tree, node.Front, validPos, up, walkableAllowance);
-        if (distance <= -reach)
-            return HitsWalkable(tree, node.Back, validPos, up, walkableAllowance);
-        return HitsWalkable(tree, node.Front, validPos, up, walkableAllowance)
-            || HitsWalkable(tree, node.Back, validPos, up, walkableAllowance);
+        return false;
     }
 
     /// <summary>
@@ -194,43 +215,43 @@ internal static class BspNodeQuery
     public static void FindWalkable(BspTree tree, int index, ref Sphere validPos, ref Polygon? polygon, Vector3 movement, Vector3 up,
         float walkableAllowance, ref float walkInterp, ref bool changed)
     {
-        if (index < 0)
-            return;
-        ref readonly var node = ref tree.NodeArray[index];
-        if (node.IsLeaf)
+        // A walk down the tree; only a straddled split recurses (into its front), its back is the next step
+        // (tested with the sphere as the front left it, as the recursion does).
+        while (index >= 0)
         {
-            if (node.PolygonCount == 0 || !node.Bounds.Intersects(validPos))
-                return;
-            var polygons = tree.PolygonArray;
-            var indices = tree.IndexArray;
-            for (int k = 0; k < node.PolygonCount; k++)
+            ref readonly var node = ref tree.NodeArray[index];
+            if (node.IsLeaf)
             {
-                var candidate = polygons[indices[node.FirstPolygon + k]];
-                if (PolygonQuery.WalkableHitsSphere(candidate, validPos, up, walkableAllowance)
-                    && PolygonQuery.AdjustSphereToPlane(candidate, ref validPos, movement, ref walkInterp))
+                if (node.PolygonCount == 0 || !node.Bounds.Intersects(validPos))
+                    return;
+                var polygons = tree.PolygonArray;
+                var indices = tree.IndexArray;
+                for (int k = 0; k < node.PolygonCount; k++)
                 {
-                    changed = true;
-                    polygon = candidate;
+                    var candidate = polygons[indices[node.FirstPolygon + k]];
+                    if (PolygonQuery.WalkableHitsSphere(candidate, validPos, up, walkableAllowance)
+                        && PolygonQuery.AdjustSphereToPlane(candidate, ref validPos, movement, ref walkInterp))
+                    {
+                        changed = true;
+                        polygon = candidate;
+                    }
                 }
+                return;
             }
-            return;
+            if (!node.Bounds.Intersects(validPos))
+                return;
+            float distance = SplitDistance(node, validPos.Center);
+            float reach = validPos.Radius - Epsilon;
+            if (distance >= reach)
+                index = node.Front;
+            else if (distance <= -reach)
+                index = node.Back;
+            else
+            {
+                FindWalkable(tree, node.Front, ref validPos, ref polygon, movement, up, walkableAllowance, ref walkInterp, ref changed);
+                index = node.Back;
+            }
         }
-        if (!node.Bounds.Intersects(validPos))
-            return;
-        float distance = SplitDistance(node, validPos.Center);
-        float reach = validPos.Radius - Epsilon;
-        if (distance >= reach)
-        {
-            FindWalkable(tree, node.Front, ref validPos, ref polygon, movement, up, walkableAllowance, ref walkInterp, ref changed);
-            return;
-        }
-        if (distance <= -reach)
-        {
-            FindWalkable(tree, node.Back, ref validPos, ref polygon, movement, up, walkableAllowance, ref walkInterp, ref changed);
-            return;
-        }
-        FindWalkable(tree, node.Front, ref validPos, ref polygon, movement, up, walkableAllowance, ref walkInterp, ref changed);
-        FindWalkable(tree, node.Back, ref validPos, ref polygon, movement, up, walkableAllowance, ref walkInterp, ref changed);
     }
 
     /// <summary>

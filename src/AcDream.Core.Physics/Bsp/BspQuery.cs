@@ -85,7 +85,7 @@ internal static class BspQuery
                 path.WalkableAllowance, ref path.WalkInterp, ref changed);
             if (!changed || hitPolygon is null)
                 return TransitionState.OK;
-            var offset = path.LocalSpacePos.LocalToGlobalVec(validPos.Center - sphere0.Center) * scale;
+            var offset = path.LocalSpaceMatrix.PositionToGlobal(validPos.Center - sphere0.Center) * scale;
             path.AddOffsetToCheckPos(offset);
             RecordWalkableContact(path, collisions, validPos, hitPolygon, scale);
             return TransitionState.Adjusted;
@@ -190,7 +190,7 @@ internal static class BspQuery
 
             if (attempt == 0)
                 return TransitionState.OK;
-            var offset = path.LocalSpacePos.LocalToGlobalVec(validPos.Center - path.LocalSpaceSphere[0].Center);
+            var offset = path.LocalSpaceMatrix.PositionToGlobal(validPos.Center - path.LocalSpaceSphere[0].Center);
             path.AddOffsetToCheckPos(offset);
             return TransitionState.Adjusted;
         }
@@ -229,7 +229,7 @@ internal static class BspQuery
             path.WalkableAllowance, ref path.WalkInterp, ref changed);
         if (!changed || found is null)
             return TransitionState.OK;
-        var offset = path.LocalSpacePos.LocalToGlobalVec(validPos.Center - checkPos.Center) * scale;
+        var offset = path.LocalSpaceMatrix.PositionToGlobal(validPos.Center - checkPos.Center) * scale;
         path.AddOffsetToCheckPos(offset);
         RecordWalkableContact(path, transition.CollisionInfo, validPos, found, scale);
         return TransitionState.Adjusted;
@@ -285,7 +285,7 @@ internal static class BspQuery
         if (!AdjustToPlane(tree, ref validPos, currPos, hitPolygon, ref contactPoint))
             return TransitionState.Collided;
         collisions.SetCollisionNormal(normal);
-        var offset = path.LocalSpacePos.LocalToGlobalVec(validPos.Center - checkPos.Center) * scale;
+        var offset = path.LocalSpaceMatrix.PositionToGlobal(validPos.Center - checkPos.Center) * scale;
         path.AddOffsetToCheckPos(offset);
         return TransitionState.Adjusted;
     }
@@ -370,7 +370,7 @@ internal static class BspQuery
     }
 
     /// <summary>Rotates a direction from the tested space into the check position's landblock space.</summary>
-    private static Vector3 ToGlobal(SpherePath path, Vector3 localVector) => path.LocalSpacePos.LocalToGlobalVec(localVector);
+    private static Vector3 ToGlobal(SpherePath path, Vector3 localVector) => path.LocalSpaceMatrix.PositionToGlobal(localVector);
 
     /// <summary>
     /// Retail Plane::localtoglobal followed by the scale fix-up of find_collisions / step_sphere_down:
@@ -381,9 +381,10 @@ internal static class BspQuery
     private static Plane ContactPlaneOf(SpherePath path, Polygon polygon, float scale)
     {
         var local = polygon.Plane;
-        var space = path.LocalSpacePos;
-        var normal = space.Frame.Matrix.PlaneNormalToGlobal(local.Normal);
-        var pointOnPlane = LandDefs.BlockOffset(path.CheckPos.CellId, space.CellId) + space.LocalToGlobal(local.Normal * -local.D);
+        ref readonly var space = ref path.LocalSpacePos;
+        ref readonly var matrix = ref path.LocalSpaceMatrix;
+        var normal = matrix.PlaneNormalToGlobal(local.Normal);
+        var pointOnPlane = LandDefs.BlockOffset(path.CheckPos.CellId, space.CellId) + matrix.PositionToGlobal(local.Normal * -local.D, space.Frame.Origin);
         // Retail sums the dot product z, y, x, in double (acclient.c:467672; see RotationMatrix on precision).
         float d = (float)-((double)normal.Z * pointOnPlane.Z + (double)normal.Y * pointOnPlane.Y + (double)normal.X * pointOnPlane.X);
         return new Plane(normal, d * scale);

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
@@ -25,6 +26,7 @@ internal static class ObjectCollisions
     /// impenetrable or they are both PK or both PK-lite (retail CPhysicsObj::FindObjCollisions, acclient
     /// 0x0050F050; ACE names it `exemption`).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool PvpExemption(ObjectInfoState mover, ShadowFlags target)
     {
         if ((target & ShadowFlags.IsPlayer) == 0 || (mover & ObjectInfoState.IsPlayer) == 0)
@@ -43,6 +45,7 @@ internal static class ObjectCollisions
     /// ignores any weenie object other than its target that is ethereal, or (when it has a target) is a
     /// creature. ACE's "two-way" variant, which lets a player be hit by a missile aimed at it, is not used.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool MissileIgnore(ObjectInfo mover, uint targetId, PhysicsState targetState, ShadowFlags targetFlags)
     {
         if ((targetState & PhysicsState.Missile) != 0)
@@ -190,11 +193,11 @@ internal static class ObjectCollisions
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
                 path.CacheLocalSpaceSphere(row.Position, 1.0f);
                 var cyl = shape.Cylinder;
-                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
+                cyl.LowPoint = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
                 return CylSphereCollision.IntersectsSphere(cyl, transition);
             default:
                 var sphere = shape.Sphere;
-                sphere.Center = row.Position.LocalToGlobal(sphere.Center) + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
+                sphere.Center = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
                 return SphereCollision.IntersectsSphere(sphere, transition, isCreature);
         }
     }

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using System.Numerics;
 using AcDream.Core.Physics.World;
 
@@ -64,6 +65,7 @@ internal sealed class ObjectCull
     }
 
     /// <summary>The check spheres' box, in the landblock space of the check cell.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void SpheresBox(SpherePath path, out Vector3 min, out Vector3 max)
     {
         min = new Vector3(float.MaxValue);

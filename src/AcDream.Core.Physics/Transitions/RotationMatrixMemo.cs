@@ -17,9 +17,10 @@ internal sealed class RotationMatrixMemo
     private bool _valid;
     private Vector3 _up;
     private bool _upValid;
+    private RotationMatrixLanes _lanes;
 
     /// <summary>The matrix of <paramref name="frame"/>'s orientation: bit for bit <see cref="Frame.Matrix"/>.</summary>
-    public RotationMatrix Of(in Frame frame)
+    public ref readonly RotationMatrix Of(in Frame frame)
     {
         var key = frame.Orientation.AsVector128().AsInt32();
         if (!_valid || !key.Equals(_for))
@@ -28,8 +29,16 @@ internal sealed class RotationMatrixMemo
             _for = key;
             _valid = true;
             _upValid = false;
+            _lanes = new RotationMatrixLanes(_matrix);
         }
-        return _matrix;
+        return ref _matrix;
+    }
+
+    /// <summary>The matrix of <paramref name="frame"/>'s orientation, widened for side-by-side transforms.</summary>
+    public ref readonly RotationMatrixLanes LanesOf(in Frame frame)
+    {
+        Of(frame);
+        return ref _lanes;
     }
 
     /// <summary>World up in the space of the orientation last asked for (Position::globaltolocalvec of +Z).</summary>

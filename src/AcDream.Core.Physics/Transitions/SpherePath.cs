@@ -204,7 +204,7 @@ internal sealed class SpherePath
         if (!last.Valid || last.NumSphere != NumSphere || !SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres)
             || !SameBits(LocalLowPoint, last.LowPointLocal))
         {
-            var matrix = _moverMatrix.Of(CurPos.Frame);
+            ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
             for (int i = 0; i < NumSphere; i++)
                 last.Centres[i] = new Sphere(matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin), LocalSphere[i].Radius);
             last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
@@ -259,7 +259,7 @@ internal sealed class SpherePath
             GlobalLowPoint = _currLowPoint;
             return;
         }
-        var matrix = _moverMatrix.Of(CheckPos.Frame);
+        ref readonly var matrix = ref _moverMatrix.LanesOf(CheckPos.Frame);
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalSphere[i].Radius = LocalSphere[i].Radius;
@@ -307,7 +307,7 @@ internal sealed class SpherePath
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
         float invScale = 1.0f / scale;
-        var spaceMatrix = _spaceMatrix.Of(space.Frame);
+        ref readonly var spaceMatrix = ref _spaceMatrix.LanesOf(space.Frame);
         // Position::localtolocal is the other position's localtoglobal, then this one's globaltolocal. The
         // first half is the same for every object tested from one path position: it is the fresh sphere
         // centres, computed once per position (same expression, same bits) instead of once per object.
@@ -325,6 +325,12 @@ internal sealed class SpherePath
         LocalSpacePos = space;
         LocalSpaceZ = _spaceMatrix.LocalUp();
     }
+
+    /// <summary>
+    /// The matrix of the space last prepared by <see cref="CacheLocalSpaceSphere"/> (<see cref="LocalSpacePos"/>'s
+    /// orientation), remembered: the BSP queries turn normals and offsets back through it.
+    /// </summary>
+    public ref readonly RotationMatrix LocalSpaceMatrix => ref _spaceMatrix.Of(LocalSpacePos.Frame);
 
     /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>
     private struct FreshCentres
@@ -351,7 +357,7 @@ internal sealed class SpherePath
     {
         if (!fresh.Valid || !SameBits(position, fresh.For))
         {
-            var matrix = _moverMatrix.Of(position.Frame);
+            ref readonly var matrix = ref _moverMatrix.LanesOf(position.Frame);
             for (int i = 0; i < NumSphere; i++)
                 fresh.Centres[i] = matrix.PositionToGlobal(LocalSphere[i].Center, position.Frame.Origin);
             fresh.For = position;

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.World;
@@ -53,6 +54,12 @@ internal readonly struct ShadowEntry
     /// when the row is written rather than at every test (the same arithmetic, so the same bits).
     /// </summary>
     public readonly Position PartPosition;
+    /// <summary>
+    /// Cylinder rows: the low point, sphere rows: the centre, placed by the object's frame
+    /// (Position::localtoglobal) in its own landblock's space, computed when the row is written rather than
+    /// at every test (the same arithmetic, so the same bits).
+    /// </summary>
+    public readonly Vector3 PlacedPoint;
 
     internal ShadowEntry(uint entityId, ShadowShape shape, in Position position, float scale, PhysicsState state, ShadowFlags flags, int cylCount, int sphereCount)
     {
@@ -65,6 +72,12 @@ internal readonly struct ShadowEntry
         CylSphereCount = (byte)Math.Min(cylCount, 255);
         SphereCount = (byte)Math.Min(sphereCount, 255);
         PartPosition = shape.Kind == ShadowShapeKind.Bsp ? new Position(position.CellId, position.Frame.Combine(shape.PartFrame)) : default;
+        PlacedPoint = shape.Kind switch
+        {
+            ShadowShapeKind.Cylinder => position.LocalToGlobal(shape.Cylinder.LowPoint),
+            ShadowShapeKind.Sphere => position.LocalToGlobal(shape.Sphere.Center),
+            _ => default,
+        };
     }
 
     /// <summary>The shape's kind.</summary>

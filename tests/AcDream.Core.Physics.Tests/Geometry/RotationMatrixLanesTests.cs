@@ -1,0 +1,49 @@
+using AcDream.Core.Physics;
+
+namespace AcDream.Core.Physics.Tests.Geometry;
+
+/// <summary>
+/// The widened matrix the sphere path transforms through (not retail; changes no result) gives the very
+/// bits of retail's scalar evaluation in <see cref="RotationMatrix"/>, whose values the frame-math tests and
+/// the ACE parity files pin. Checked on rotations about every axis and skewed ones, with points whose
+/// products and sums round (thirds, large and small coordinates, negative zero) and a z difference that
+/// float cannot hold exactly (the unrounded z row of Frame::globaltolocal).
+/// </summary>
+public class RotationMatrixLanesTests
+{
+    private static readonly Vector3[] Points =
+    [
+        new(0f, 0f, 0f), new(1f / 3f, -2f / 3f, 0.475f), new(191.99998f, 0.0001f, -1.35f),
+        new(-0f, 7.123457f, 1e-7f), new(-95.5f, 120.25f, 33.333332f), new(0.48f, 0.48f, 0.48f),
+        new(3.1f, -0.2f, 1234.5677f),
+    ];
+
+    private static IEnumerable<Quaternion> Rotations()
+    {
+        yield return Quaternion.Identity;
+        foreach (var axis in new[] { Vector3.UnitX, Vector3.UnitY, Vector3.UnitZ, Vector3.Normalize(new Vector3(1, 2, 3)), Vector3.Normalize(new Vector3(-0.3f, 0.9f, 0.1f)) })
+            for (int degrees = -170; degrees <= 180; degrees += 37)
+                yield return Quaternion.CreateFromAxisAngle(axis, degrees * MathF.PI / 180f);
+    }
+
+    private static uint[] Bits(Vector3 v) => [BitConverter.SingleToUInt32Bits(v.X), BitConverter.SingleToUInt32Bits(v.Y), BitConverter.SingleToUInt32Bits(v.Z)];
+
+    [Fact]
+    public void PositionToGlobal_AndFrameToLocal_AreTheScalarFormsBitForBit()
+    {
+        int checks = 0;
+        foreach (var q in Rotations())
+        {
+            var scalar = new Frame(Vector3.Zero, q).Matrix;
+            var lanes = new RotationMatrixLanes(scalar);
+            foreach (var p in Points)
+                foreach (var origin in Points)
+                {
+                    Assert.Equal(Bits(scalar.PositionToGlobal(p, origin)), Bits(lanes.PositionToGlobal(p, origin)));
+                    Assert.Equal(Bits(scalar.FrameToLocal(p, origin)), Bits(lanes.FrameToLocal(p, origin)));
+                    checks++;
+                }
+        }
+        Assert.True(checks > 1000, $"{checks} checks");
+    }
+}
