@@ -131,7 +131,7 @@ public static class ComponentJob
                 case "validate": _sink += Validate().Id; break;
                 case "setup": Setup(); break;
                 case "transition": Setup(); _sink += _t.FindTransitionalPosition() ? 1 : 0; break;
-                case "collect": _sink += _engine.Collect(_t, true, _state).Next.Position.Frame.Origin.Y; break;
+                case "collect": _sink += PhysicsEngine.Collect(_t, true, _state).Next.Position.Frame.Origin.Y; break;
                 case "cell-array": _sink += _t.BuildCellArray(true)!.Id; break;
                 case "land": _sink += (int)_cell.FindEnvCollisions(_t); break;
                 case "objects": _sink += (int)ObjectCollisions.FindInCell(_t, _cell.Id, _objects); break;
