@@ -287,10 +287,7 @@ internal sealed class SpherePath
     private bool _currCentersValid;
 
     /// <summary>True when two positions are identical bit for bit (so any function of them gives identical results).</summary>
-    internal static bool SameBits(in Position a, in Position b) =>
-        a.CellId == b.CellId
-        && a.Frame.Origin.AsVector128().AsInt32().Equals(b.Frame.Origin.AsVector128().AsInt32())
-        && a.Frame.Orientation.AsVector128().AsInt32().Equals(b.Frame.Orientation.AsVector128().AsInt32());
+    internal static bool SameBits(in Position a, in Position b) => Position.SameBits(a, b);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)
