@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
@@ -17,10 +18,10 @@ public sealed class CellGraph
 {
     private readonly Dictionary<uint, Cell> _cells = new();
 
-    // The outdoor cells again, by landblock x byte, then y byte, then cell index − 1: the cell search and
-    // the per-frame checks look land cells up several times per transition, and two array reads are
-    // cheaper than a hash lookup. Filled when a landblock is added; never changed after.
-    private readonly LandCell[]?[]?[] _landBlocks = new LandCell[]?[]?[256];
+    // The outdoor cells again, by array: the cell search and the per-frame checks look land cells up
+    // several times per transition, and array reads are cheaper than a hash lookup. Filled when a
+    // landblock is added; never changed after.
+    private readonly CellTable<LandCell> _land = new();
 
     /// <summary>
     /// Adds a land block's 64 outdoor cells built from its terrain. All or nothing: a landblock already in
@@ -40,9 +41,10 @@ public sealed class CellGraph
         for (uint i = 1; i <= 64; i++)
             built[i - 1] = new LandCell((terrain.Landblock << 16) | i, terrain);
         foreach (var land in built)
+        {
             _cells.Add(land.Id, land);
-        var column = _landBlocks[(terrain.Landblock >> 8) & 0xFF] ??= new LandCell[]?[256];
-        column[terrain.Landblock & 0xFF] = built;
+            _land.Set(land.Id, land);
+        }
     }
 
     /// <summary>Adds an env cell. Its portals may name cells added later.</summary>
@@ -68,13 +70,11 @@ public sealed class CellGraph
     }
 
     /// <summary>The cell with this id, or null.</summary>
-    public Cell? Get(uint cellId)
-    {
-        uint index = (cellId & 0xFFFF) - 1;
-        if (index < 64)
-            return _landBlocks[cellId >> 24]?[(cellId >> 16) & 0xFF]?[index];
-        return _cells.TryGetValue(cellId, out var cell) ? cell : null;
-    }
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public Cell? Get(uint cellId) => (cellId & 0xFFFF) - 1 < 64 ? _land.Get(cellId) : GetIndoor(cellId);
+
+    // Apart so that Get inlines: the land path is array reads.
+    private Cell? GetIndoor(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
 
     /// <summary>The cell with this id; throws naming the id when unknown.</summary>
     internal Cell GetRequired(uint cellId, string field) =>
@@ -91,51 +91,64 @@ public sealed class CellGraph
     internal Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, SpherePath? path)
     {
         cells.Clear();
-        var start = Get(position.CellId);
+        uint startId = position.CellId;
+        var start = Get(startId);
         // Retail adds the outside cells again for every land cell in the list (and for each indoor cell with
         // a portal to the outside near a sphere); they depend only on the spheres, so every call after the
         // first adds nothing. Remember that they are in.
         bool outsideAdded = false;
-        if (!LandDefs.IsLandCell(position.CellId))
+        if (!LandDefs.IsLandCell(startId))
         {
             if (path is not null) path.HitsInteriorCell = true;
             if (start is not null) cells.Add(start);
         }
         else
         {
-            AddOutsideCells(position, spheres, cells);
+            AddOutsideCells(startId, spheres, cells);
             outsideAdded = true;
         }
         if (start is null || spheres.Length == 0)
             return null;
 
-        for (int i = 0; i < cells.Count; i++)
-            AddTransitCells(cells[i], position, spheres, cells, path, ref outsideAdded);
-
-        if (!findContaining)
-            return null;
-        Cell? containing = null;
+        // One pass: the transit step of each cell (the list grows as it goes), and, for land cells, whether
+        // they hold sphere 0's centre. The holder is the first indoor cell in the list that holds the centre,
+        // else the last land cell that does; indoor cells are tested after the list is complete.
+        var centre = spheres[0].Center;
+        LandCell? landHolder = null;
+        bool anyIndoor = false;
         for (int i = 0; i < cells.Count; i++)
         {
             var cell = cells[i];
-            var point = spheres[0].Center - LandDefs.BlockOffset(position.CellId, cell.Id);
-            bool inside = cell switch
+            if (cell is LandCell land)
             {
-                EnvCell env => env.ContainsPoint(point),
-                LandCell land => land.ContainsPoint(point),
-                _ => false,
-            };
-            if (!inside)
-                continue;
-            containing = cell;
-            if (cell is EnvCell)
-            {
-                if (path is not null) path.HitsInteriorCell = true;
-                break;
+                if (findContaining && land.ContainsPoint(centre - LandDefs.BlockOffset(startId, land.Id)))
+                    landHolder = land;
+                // Once the outside cells are in, a land cell without a building adds nothing.
+                if (outsideAdded && land.Building is null)
+                    continue;
             }
+            else
+            {
+                anyIndoor = true;
+            }
+            AddTransitCells(cell, position, spheres, cells, path, ref outsideAdded);
         }
-        return containing;
+        if (!findContaining)
+            return null;
+        if (anyIndoor)
+            for (int i = 0; i < cells.Count; i++)
+                if (cells[i] is EnvCell env && ContainsCentre(env, centre, startId))
+                {
+                    if (path is not null) path.HitsInteriorCell = true;
+                    return env;
+                }
+        return landHolder;
     }
+
+    // Apart so that the land path of FindCellList stays small (no rotation matrix in its frame).
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static bool ContainsCentre(EnvCell env, Vector3 centre, uint startId) =>
+        env.ContainsPoint(centre - LandDefs.BlockOffset(startId, env.Id));
 
     private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path, ref bool outsideAdded)
     {
@@ -143,7 +156,7 @@ public sealed class CellGraph
         {
             if (!outsideAdded)
             {
-                AddOutsideCells(position, spheres, cells);
+                AddOutsideCells(position.CellId, spheres, cells);
                 outsideAdded = true;
             }
             if (land.Building is { } building)
@@ -174,7 +187,7 @@ public sealed class CellGraph
         }
         if (checkOutside && !outsideAdded)
         {
-            AddOutsideCells(position, spheres, cells);
+            AddOutsideCells(position.CellId, spheres, cells);
             outsideAdded = true;
         }
     }
@@ -196,42 +209,61 @@ public sealed class CellGraph
     /// Retail add_all_outside_cells: the outdoor cell under each sphere centre plus the neighbours the
     /// sphere reaches across a cell border (check_add_cell_boundary), across landblocks too.
     /// </summary>
-    private void AddOutsideCells(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void AddOutsideCells(uint startId, ReadOnlySpan<Sphere> spheres, CellArray cells)
     {
-        uint block = position.CellId >> 16;
+        uint block = startId >> 16;
         int blockX = (int)(block >> 8) * 8, blockY = (int)(block & 0xFF) * 8;
-        foreach (var sphere in spheres)
+        for (int i = 0; i < spheres.Length; i++)
         {
-            float fx = MathF.Floor(sphere.Center.X / PhysicsConstants.LandCellLength);
-            float fy = MathF.Floor(sphere.Center.Y / PhysicsConstants.LandCellLength);
+            // A sphere over the one before it (the same X, Y and radius, to the bit) adds the same cells again,
+            // which are all in already: the player's two stacked spheres.
+            if (i > 0 && SameColumn(spheres[i], spheres[i - 1]))
+                continue;
+            float x = spheres[i].Center.X, y = spheres[i].Center.Y, radius = spheres[i].Radius;
+            float fx = MathF.Floor(x / PhysicsConstants.LandCellLength);
+            float fy = MathF.Floor(y / PhysicsConstants.LandCellLength);
             if (!float.IsFinite(fx) || !float.IsFinite(fy))
                 continue;
             int gx = blockX + (int)fx, gy = blockY + (int)fy;
-            float px = sphere.Center.X - fx * PhysicsConstants.LandCellLength;
-            float py = sphere.Center.Y - fy * PhysicsConstants.LandCellLength;
-            float min = sphere.Radius, max = PhysicsConstants.LandCellLength - sphere.Radius;
-            AddOutsideCell(cells, gx, gy);
-            if (px > max)
-            {
-                AddOutsideCell(cells, gx + 1, gy);
-                if (py > max) AddOutsideCell(cells, gx + 1, gy + 1);
-                if (py < min) AddOutsideCell(cells, gx + 1, gy - 1);
-            }
-            if (px < min)
-            {
-                AddOutsideCell(cells, gx - 1, gy);
-                if (py > max) AddOutsideCell(cells, gx - 1, gy + 1);
-                if (py < min) AddOutsideCell(cells, gx - 1, gy - 1);
-            }
-            if (py > max) AddOutsideCell(cells, gx, gy + 1);
-            if (py < min) AddOutsideCell(cells, gx, gy - 1);
+            float px = x - fx * PhysicsConstants.LandCellLength;
+            float py = y - fy * PhysicsConstants.LandCellLength;
+            float min = radius, max = PhysicsConstants.LandCellLength - radius;
+            if (_land.GetLandAtGlobal(gx, gy) is { } centre)
+                cells.Add(centre);
+            if (px > max || px < min || py > max || py < min)
+                AddNeighbours(cells, gx, gy, px, py, min, max);
         }
     }
 
+    /// <summary>The cells beside (gx, gy) that a sphere at (px, py) in it reaches (check_add_cell_boundary), in retail's order.</summary>
+    private void AddNeighbours(CellArray cells, int gx, int gy, float px, float py, float min, float max)
+    {
+        if (px > max)
+        {
+            AddOutsideCell(cells, gx + 1, gy);
+            if (py > max) AddOutsideCell(cells, gx + 1, gy + 1);
+            if (py < min) AddOutsideCell(cells, gx + 1, gy - 1);
+        }
+        if (px < min)
+        {
+            AddOutsideCell(cells, gx - 1, gy);
+            if (py > max) AddOutsideCell(cells, gx - 1, gy + 1);
+            if (py < min) AddOutsideCell(cells, gx - 1, gy - 1);
+        }
+        if (py > max) AddOutsideCell(cells, gx, gy + 1);
+        if (py < min) AddOutsideCell(cells, gx, gy - 1);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool SameColumn(in Sphere a, in Sphere b) =>
+        BitConverter.SingleToInt32Bits(a.Center.X) == BitConverter.SingleToInt32Bits(b.Center.X)
+        && BitConverter.SingleToInt32Bits(a.Center.Y) == BitConverter.SingleToInt32Bits(b.Center.Y)
+        && BitConverter.SingleToInt32Bits(a.Radius) == BitConverter.SingleToInt32Bits(b.Radius);
+
     private void AddOutsideCell(CellArray cells, int gx, int gy)
     {
-        uint id = LandDefs.LandCellAtGlobal(gx, gy);
-        if (id != 0 && Get(id) is { } cell)
+        if (_land.GetLandAtGlobal(gx, gy) is { } cell)
             cells.Add(cell);
     }
 }

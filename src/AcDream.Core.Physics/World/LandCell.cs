@@ -12,6 +12,10 @@ public sealed class LandCell : Cell
 {
     private readonly Polygon _first;
     private readonly Polygon _second;
+    // The same triangles prepared for the point-in-triangle test that the cell search and the terrain test
+    // run on every insert.
+    private readonly Triangle2D _firstXY;
+    private readonly Triangle2D _secondXY;
 
     /// <summary>Creates land cell <paramref name="id"/> from its landblock's terrain.</summary>
     internal LandCell(uint id, Terrain terrain) : base(id)
@@ -23,6 +27,8 @@ public sealed class LandCell : Cell
             throw new System.ArgumentException($"cell 0x{id:X8}: is not in the terrain's landblock 0x{terrain.Landblock:X4}.", nameof(id));
         int x = (int)((index - 1) / 8), y = (int)((index - 1) % 8);
         (_first, _second) = terrain.CellTriangles(x, y);
+        _firstXY = new Triangle2D(_first.Vertices);
+        _secondXY = new Triangle2D(_second.Vertices);
     }
 
     /// <summary>The cell's two terrain triangles (landblock-local), for the world queries.</summary>
@@ -32,15 +38,16 @@ public sealed class LandCell : Cell
     public Building? Building { get; internal set; }
 
     /// <summary>The terrain triangle under a landblock-local point (by X and Y), or null when outside the cell.</summary>
+    /// <remarks>Retail's test is <see cref="PolygonQuery.PointInPoly2D"/> (positive side) on each triangle in turn.</remarks>
     internal Polygon? FindTerrainPolygon(Vector3 point)
     {
-        if (PolygonQuery.PointInPoly2D(_first, point, Sidedness.Positive)) return _first;
-        if (PolygonQuery.PointInPoly2D(_second, point, Sidedness.Positive)) return _second;
+        if (_firstXY.Contains(point)) return _first;
+        if (_secondXY.Contains(point)) return _second;
         return null;
     }
 
     /// <summary>Retail point_in_cell for land: the point's X/Y lie on one of the triangles.</summary>
-    public bool ContainsPoint(Vector3 point) => FindTerrainPolygon(point) is not null;
+    public bool ContainsPoint(Vector3 point) => _firstXY.Contains(point) || _secondXY.Contains(point);
 
     /// <summary>The horizontal distance from the cell's 24 m square.</summary>
     internal override float DistanceOutside(Vector3 point)

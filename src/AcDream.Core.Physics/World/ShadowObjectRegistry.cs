@@ -45,7 +45,8 @@ public sealed class ShadowObjectRegistry
     internal readonly record struct Slot(Record Record, int CellIndex, Vector3 ReachMin, Vector3 ReachMax);
 
     private readonly CellGraph _graph;
-    private readonly Dictionary<uint, List<Slot>> _byCell = new();
+    // Each cell's list, by cell id: looked up once per cell per insert, so land cells are found by array.
+    private readonly CellTable<List<Slot>> _byCell = new();
     private readonly Dictionary<uint, Record> _objects = new();
     private readonly CellArray _scratch = new();
     private readonly List<uint> _newCells = new(4);
@@ -171,7 +172,7 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     internal ReadOnlySpan<ShadowEntry> RowsInCell(uint cellId)
     {
-        if (!_byCell.TryGetValue(cellId, out var slots) || slots.Count == 0)
+        if (_byCell.Get(cellId) is not { Count: > 0 } slots)
             return ReadOnlySpan<ShadowEntry>.Empty;
         var rows = new List<ShadowEntry>();
         foreach (var slot in slots)
@@ -180,7 +181,7 @@ public sealed class ShadowObjectRegistry
     }
 
     /// <summary>The objects listed in a cell, in the order they are tested; allocates nothing (the per-frame path).</summary>
-    internal CellObjects ObjectsInCell(uint cellId) => new(_byCell.TryGetValue(cellId, out var slots) ? slots : null);
+    internal CellObjects ObjectsInCell(uint cellId) => new(_byCell.Get(cellId));
 
     /// <summary>A cell's objects: how many, and each one's rows. Valid until the registry is next modified.</summary>
     internal readonly struct CellObjects
@@ -367,8 +368,9 @@ public sealed class ShadowObjectRegistry
         for (int k = 0; k < cells.Count; k++)
         {
             uint cellId = cells[k];
-            if (!_byCell.TryGetValue(cellId, out var slots))
-                _byCell.Add(cellId, slots = new List<Slot>());
+            var slots = _byCell.Get(cellId);
+            if (slots is null)
+                _byCell.Set(cellId, slots = new List<Slot>());
             record.Cells.Add(cellId);
             record.Slots.Add(slots.Count);
             var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
@@ -387,7 +389,7 @@ public sealed class ShadowObjectRegistry
         Version++;
         for (int k = 0; k < record.Cells.Count; k++)
         {
-            var slots = _byCell[record.Cells[k]];
+            var slots = _byCell.Get(record.Cells[k])!;
             int hole = record.Slots[k];
             int last = slots.Count - 1;
             if (hole != last)

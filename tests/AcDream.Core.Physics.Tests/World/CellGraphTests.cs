@@ -14,7 +14,7 @@ public class CellGraphTests
         var cells = new CellArray();
         ReadOnlySpan<Sphere> spheres = [new Sphere(position.Origin + new Vector3(0, 0, z), radius)];
         var holder = world.Cells.FindCellList(position, spheres, cells, findContaining: true, path: null);
-        return (cells.Cells.Select(c => c.Id).ToHashSet(), holder);
+        return (Enumerable.Range(0, cells.Count).Select(i => cells[i].Id).ToHashSet(), holder);
     }
 
     [Fact]

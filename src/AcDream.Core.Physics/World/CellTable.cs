@@ -1,0 +1,56 @@
+using System.Collections.Generic;
+using System.Runtime.CompilerServices;
+
+namespace AcDream.Core.Physics.World;
+
+/// <summary>
+/// Values keyed by cell id, for lookups on the per-frame path: outdoor cells (index 1..64) by arrays (landblock
+/// x byte, then y byte, then cell index − 1), so a lookup is three array reads instead of a hash; indoor
+/// cells by a dictionary. Single writer; readers may run in parallel while nothing writes.
+/// </summary>
+internal sealed class CellTable<T> where T : class
+{
+    private readonly T?[]?[]?[] _land = new T?[]?[]?[256];
+    private readonly Dictionary<uint, T> _indoor = new();
+
+    /// <summary>The value for a cell, or null.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public T? Get(uint cellId)
+    {
+        uint index = (cellId & 0xFFFF) - 1;
+        if (index < 64)
+            return _land[cellId >> 24]?[(cellId >> 16) & 0xFF]?[index];
+        return GetIndoor(cellId);
+    }
+
+    /// <summary>
+    /// The value for the outdoor cell at global land-cell coordinates (0..2039 on each axis, see
+    /// <see cref="LandDefs.LandCellAtGlobal"/>), or null (also outside the world).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public T? GetLandAtGlobal(int gx, int gy)
+    {
+        if ((uint)gx >= LandDefs.CellsPerSide || (uint)gy >= LandDefs.CellsPerSide)
+            return null;
+        return _land[gx >> 3]?[gy >> 3]?[(gx & 7) * 8 + (gy & 7)];
+    }
+
+    /// <summary>Sets the value for a cell.</summary>
+    public void Set(uint cellId, T value)
+    {
+        uint index = (cellId & 0xFFFF) - 1;
+        if (index < 64)
+        {
+            var column = _land[cellId >> 24] ??= new T?[]?[256];
+            var block = column[(cellId >> 16) & 0xFF] ??= new T?[64];
+            block[index] = value;
+        }
+        else
+        {
+            _indoor[cellId] = value;
+        }
+    }
+
+    // Apart so that Get inlines: the outdoor path is the array reads.
+    private T? GetIndoor(uint cellId) => _indoor.TryGetValue(cellId, out var value) ? value : null;
+}
