@@ -65,7 +65,16 @@ internal sealed partial class Transition
         // Retail (CTransition::calc_num_steps, acclient.c:311763) measures the motion, divides it by the
         // radius and scales the per-step offset on the x87 stack at double precision, rounding each
         // per-step component once.
-        double dist = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
+        double squared = (double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z;
+        // A motion no longer than the radius is one sub-step (none when zero), decided without the square
+        // root and the division: a float's square is exact in double, and a correctly rounded square root
+        // and quotient cannot cross it, so squared <= radius² exactly when dist / radius <= 1.
+        if (!isViewer && squared <= (double)radius * radius)
+        {
+            offsetPerStep = offset;
+            return offset != Vector3.Zero ? 1 : 0;
+        }
+        double dist = Math.Sqrt(squared);
         double step = dist / radius;
         if (!isViewer)
         {
