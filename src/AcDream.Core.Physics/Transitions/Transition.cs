@@ -152,12 +152,7 @@ internal sealed partial class Transition
         for (int step = 0; step < numSteps; step++)
         {
             if (IsViewer && step == numSteps - 1)
-            {
-                // The camera's last step covers exactly what is left of the motion.
-                double length = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
-                if (length > PhysicsConstants.Epsilon)
-                    perStep = Scale(offset, (length - (double)(path.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
-            }
+                perStep = ViewerLastStep(offset, perStep, numSteps);
             if (step == 0 && plan.FirstKnown)
             {
                 CollisionInfo.SlidingNormalValid = plan.FirstSlidingNormalValid;
@@ -199,6 +194,19 @@ internal sealed partial class Transition
     }
 
     private bool IsViewer => (ObjectInfo.State & ObjectInfoState.IsViewer) != 0;
+
+    /// <summary>
+    /// The camera's last sub-step covers exactly what is left of the motion. Out of line: inlined, its
+    /// square root was hoisted out of the loop and computed for every mover.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private Vector3 ViewerLastStep(Vector3 offset, Vector3 perStep, int numSteps)
+    {
+        double length = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
+        if (length > PhysicsConstants.Epsilon)
+            perStep = Scale(offset, (length - (double)(SpherePath.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
+        return perStep;
+    }
 
     /// <summary>
     /// Retail adjust_offset: constrains a sub-step's motion by the sliding normal and the contact plane
