@@ -65,6 +65,15 @@ public sealed class LandCell : Cell
     internal override TransitionState FindEnvCollisions(Transition transition)
     {
         var path = transition.SpherePath;
+        if ((path.CheckPos.CellId >> 16) == (Id >> 16))
+        {
+            // The usual case, the check position in this cell's landblock: no offset, so sphere 0 is passed as
+            // it is (subtracting a zero offset would change no bit) and not copied.
+            var triangle = FindTerrainPolygon(path.GlobalLowPoint);
+            if (triangle is null)
+                return TransitionState.OK;
+            return transition.ValidateWalkable(path.GlobalSphere[0], triangle.Plane, isWater: false, waterDepth: 0f, Id);
+        }
         var blockOffset = LandDefs.BlockOffset(path.CheckPos.CellId, Id);
         var walkable = FindTerrainPolygon(path.GlobalLowPoint - blockOffset);
         if (walkable is null)
