@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 
 namespace AcDream.Core.Physics;
 
@@ -53,6 +54,13 @@ public struct Frame
     }
 
     private readonly float Qw => BitConverter.UInt32BitsToSingle(_qwXorOne ^ OneBits);
+
+    /// <summary>
+    /// The orientation's stored bits as they lie in the frame (W still xor-ed with 1f's bits): equal keys
+    /// mean bit-identical orientations, so the memos compare these without rebuilding the quaternion.
+    /// </summary>
+    internal readonly Vector128<int> OrientationKey =>
+        Unsafe.ReadUnaligned<Vector128<int>>(ref Unsafe.As<float, byte>(ref Unsafe.AsRef(in _qx)));
 
     /// <summary>The rotation matrix retail caches for this frame (Frame::cache).</summary>
     internal readonly RotationMatrix Matrix => new(Qw, _qx, _qy, _qz);

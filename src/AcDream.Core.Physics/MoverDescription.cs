@@ -155,12 +155,12 @@ public struct MoverState
 /// </remarks>
 public readonly struct MoveResult
 {
-    internal MoveResult(bool succeeded, MoverState next, TransitionState lastState, bool collisionNormalValid, Vector3 collisionNormal,
+    internal MoveResult(bool succeeded, in MoverState next, TransitionState lastState, bool collisionNormalValid, Vector3 collisionNormal,
         bool collidedWithEnvironment, ReadOnlyMemory<uint> collidedObjects, uint lastCollidedObject, bool velocityKilled = false)
     {
         VelocityKilled = velocityKilled;
         Succeeded = succeeded;
-        Next = next;
+        _next = next;
         LastState = lastState;
         CollisionNormalValid = collisionNormalValid;
         CollisionNormal = collisionNormal;
@@ -170,13 +170,52 @@ public readonly struct MoveResult
     }
 
     /// <summary>
+    /// The outcome of a transition, read from its collision info and path: an accepted move sets every
+    /// field of the next state, a failed one keeps <paramref name="previous"/>. Written field by field
+    /// into the result, without an intermediate state (a copy of ~140 bytes through the stack otherwise).
+    /// </summary>
+    internal MoveResult(Transition t, bool succeeded, in MoverState previous)
+    {
+        var ci = t.CollisionInfo;
+        Succeeded = succeeded;
+        if (succeeded)
+        {
+            var path = t.SpherePath;
+            _next.Position = path.CurPos;
+            if (path.CurCell is not null)
+                _next.Position.CellId = path.CurCell.Id;
+            _next.ContactPlane = ci.ContactPlane;
+            _next.ContactPlaneCellId = ci.ContactPlaneCellId;
+            _next.ContactPlaneIsWater = ci.ContactPlaneIsWater;
+            _next.Contact = ci.ContactPlaneValid;
+            _next.OnWalkable = ci.ContactPlaneValid && ci.ContactPlane.Normal.Z >= PhysicsConstants.FloorZ;
+            _next.SlidingNormalValid = ci.SlidingNormalValid;
+            _next.SlidingNormal = ci.SlidingNormal;
+            LastState = TransitionState.OK;
+        }
+        else
+        {
+            _next = previous;
+            LastState = TransitionState.Collided;
+        }
+        CollisionNormalValid = ci.CollisionNormalValid;
+        CollisionNormal = ci.CollisionNormal;
+        CollidedWithEnvironment = ci.CollidedWithEnvironment;
+        CollidedObjects = ci.CollidedObjects;
+        LastCollidedObject = ci.LastCollidedObject;
+        VelocityKilled = ci.VelocityKilled;
+    }
+
+    /// <summary>
     /// False when retail refuses the move and the mover stays put: the first sub-step could not move at all
     /// (it is pushing into what it touched last frame), the motion needs more than
     /// <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps, or (<see cref="PhysicsEngine.Place"/>) no free spot was found.
     /// </summary>
     public bool Succeeded { get; }
     /// <summary>The mover's state for the next frame: resolved position and cell, contact, walkable, sliding normal.</summary>
-    public MoverState Next { get; }
+    public MoverState Next => _next;
+
+    private readonly MoverState _next;
     /// <summary>The transition's result (OK when the move was accepted).</summary>
     public TransitionState LastState { get; }
     /// <summary>

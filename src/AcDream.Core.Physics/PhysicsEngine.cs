@@ -15,7 +15,6 @@ namespace AcDream.Core.Physics;
 public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
-    private uint[] _collided = new uint[8];
     private RefusalMemo _lastRefusal;
 
     /// <summary>Creates an engine over a world.</summary>
@@ -77,7 +76,7 @@ public sealed partial class PhysicsEngine
         var cell = ValidateState(mover, state, begin, target.CellId);
 
         var t = _transition;
-        if (t.RefusesBeforeFirstStep(mover, state, begin, target))
+        if (t.RefusesBeforeFirstStep(mover, state, begin, target, out var plan))
         {
             _lastRefusal.Remember(mover, state, target);
             return Refused(state);
@@ -86,7 +85,7 @@ public sealed partial class PhysicsEngine
         t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
-        bool ok = t.FindTransitionalPosition();
+        bool ok = t.FindTransitionalPosition(in plan);
         return Collect(t, ok, state);
     }
 
@@ -98,16 +97,17 @@ public sealed partial class PhysicsEngine
     internal World.Cell ValidateState(MoverDescription mover, in MoverState state, in Position begin, uint targetCellId)
     {
         var cells = _transition.World.Cells;
-        var cell = cells.GetRequired(begin.CellId, "state.position.cell");
+        // GetRequired only to throw its error: the lookup alone inlines.
+        var cell = cells.Get(begin.CellId) ?? cells.GetRequired(begin.CellId, "state.position.cell");
         Guard.NearCell(cell.DistanceOutside(begin.Frame.Origin), mover.Reach, begin.CellId, begin.Frame.Origin, "state.position.origin");
-        if (targetCellId != begin.CellId)
+        if (targetCellId != begin.CellId && cells.Get(targetCellId) is null)
             cells.GetRequired(targetCellId, "target.cell");
         if (state.Contact || state.ContactPlaneCellId != 0)
         {
             Guard.UnitNormal(state.ContactPlane.Normal, "state.contactPlane.normal");
             Guard.Coordinate(state.ContactPlane.D, "state.contactPlane.d");
             uint planeCell = state.ContactPlaneCellId;
-            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId)
+            if (planeCell != 0 && planeCell != begin.CellId && planeCell != targetCellId && cells.Get(planeCell) is null)
                 cells.GetRequired(planeCell, "state.contactPlaneCellId");
         }
         if (state.SlidingNormalValid)
@@ -167,32 +167,8 @@ public sealed partial class PhysicsEngine
     }
 
     /// <summary>The result of a move refused before its first sub-step: nothing moved and nothing was hit.</summary>
-    private MoveResult Refused(in MoverState previous) =>
-        new(false, previous, TransitionState.Collided, false, Vector3.Zero, false, new ReadOnlyMemory<uint>(_collided, 0, 0), 0, false);
+    private static MoveResult Refused(in MoverState previous) =>
+        new(false, previous, TransitionState.Collided, false, Vector3.Zero, false, ReadOnlyMemory<uint>.Empty, 0, false);
 
-    internal MoveResult Collect(Transition t, bool ok, in MoverState previous)
-    {
-        var ci = t.CollisionInfo;
-        var path = t.SpherePath;
-        var next = previous;
-        if (ok)
-        {
-            next.Position = path.CurPos;
-            if (path.CurCell is not null)
-                next.Position.CellId = path.CurCell.Id;
-            next.ContactPlane = ci.ContactPlane;
-            next.ContactPlaneCellId = ci.ContactPlaneCellId;
-            next.ContactPlaneIsWater = ci.ContactPlaneIsWater;
-            next.Contact = ci.ContactPlaneValid;
-            next.OnWalkable = ci.ContactPlaneValid && ci.ContactPlane.Normal.Z >= PhysicsConstants.FloorZ;
-            next.SlidingNormalValid = ci.SlidingNormalValid;
-            next.SlidingNormal = ci.SlidingNormal;
-        }
-        int count = ci.CollidedObjects.Count;
-        if (_collided.Length < count)
-            _collided = new uint[Math.Max(count, _collided.Length * 2)];
-        ci.CollidedObjects.CopyTo(_collided);
-        return new MoveResult(ok, next, ok ? TransitionState.OK : TransitionState.Collided, ci.CollisionNormalValid, ci.CollisionNormal,
-            ci.CollidedWithEnvironment, new ReadOnlyMemory<uint>(_collided, 0, count), ci.LastCollidedObject, ci.VelocityKilled);
-    }
+    internal static MoveResult Collect(Transition t, bool ok, in MoverState previous) => new(t, ok, previous);
 }

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Diagnostics;
 using System.Numerics;
 using AcDream.Core.Physics.Scenes;
@@ -9,9 +10,13 @@ using AcDream.Core.Physics.Validation;
 namespace AcDream.Core.Physics.Bench.Components;
 
 /// <summary>
-/// <c>components [NAME...]</c>: what each part of one transition costs, to see where a frame's time goes.
-/// The frame is the door scene's player walking 2 m/s at 30 Hz towards the door from 0.2 m short (a free
-/// move whose one sub-step tests the terrain and the door's BSP). Each component runs on the transition as
+/// <c>components [--slide | --collide] [NAME...]</c>: what each part of one transition costs, to see where a
+/// frame's time goes. The frame is the door scene's player walking 2 m/s at 30 Hz towards the door from
+/// 0.2 m short (a free move whose one sub-step tests the terrain and the door's BSP). The 45° NE slide along
+/// the door's face (the timing driver's slide-ne: 0.1 m per frame from (99.6, 99.0)) alternates two kinds of
+/// frame once it reaches the door: <c>--slide</c> times its eleventh frame, which carries the sliding normal
+/// and moves along the face in one insert; <c>--collide</c> its tenth, which carries none, hits the face,
+/// tries to step up (three inserts) and slides. Each component runs on the transition as
 /// the frame leaves it, 40 rounds of 50,000 calls after 200,000 to warm up; the fastest round is printed in
 /// ns per call. Components nest (<c>setup</c> includes <c>validate</c>, <c>insert</c> includes
 /// <c>cells</c>, <c>cells</c> includes <c>land</c> and <c>objects</c>…). For repeatable numbers run it with
@@ -42,13 +47,15 @@ public static class ComponentJob
     /// <summary>Runs the job; exit 2 on an unknown component.</summary>
     public static int Run(string[] args)
     {
+        int slideFrame = args.Contains("--slide") ? 10 : args.Contains("--collide") ? 9 : -1;
+        args = args.Where(a => a != "--slide" && a != "--collide").ToArray();
         foreach (string name in args)
             if (Array.FindIndex(All, c => c.Name == name) < 0)
             {
                 Console.Error.WriteLine($"components: unknown component '{name}' (known: {string.Join(", ", Array.ConvertAll(All, c => c.Name))})");
                 return 2;
             }
-        var frame = new FreeFrame();
+        var frame = new FreeFrame(slideFrame);
         Console.WriteLine("| component | ns per call | what |");
         Console.WriteLine("|---|---:|---|");
         foreach (var (name, what) in All)
@@ -73,15 +80,23 @@ public static class ComponentJob
         private readonly World.ShadowEntry _door;
         private float _sink;
 
-        public FreeFrame()
+        public FreeFrame(int slideFrame)
         {
+            bool slide = slideFrame >= 0;
             var world = SceneLibrary.Load("door").World;
             _engine = new PhysicsEngine(world);
             _t = _engine.Transition;
-            var p = new Vector3(100f, DoorScene.DoorOrigin.Y - 0.009f - DoorScene.PlayerRadius - 0.2f, 0);
+            var p = slide ? new Vector3(99.6f, 99.0f, 0) : new Vector3(100f, DoorScene.DoorOrigin.Y - 0.009f - DoorScene.PlayerRadius - 0.2f, 0);
+            var step = slide ? new Vector3(0.0707f, 0.0707f, 0) : new Vector3(0, 2f / 30f, 0);
             _state = MoverState.OnFloor(new Position(LandDefs.LandCellAt(0xA9B4, p), p), 0f);
+            for (int i = 0; i < slideFrame; i++)
+            {
+                var next = _state.Position;
+                next.Frame.Origin += step;
+                _state = _engine.Resolve(_player, _state, next).Next;
+            }
             _target = _state.Position;
-            _target.Frame.Origin += new Vector3(0, 2f / 30f, 0);
+            _target.Frame.Origin += step;
             Setup();
             _t.SpherePath.SetCheckPos(_t.SpherePath.CurPos, _t.SpherePath.CurCell);
             _cell = _t.SpherePath.CheckCell!;
@@ -116,7 +131,7 @@ public static class ComponentJob
                 case "validate": _sink += Validate().Id; break;
                 case "setup": Setup(); break;
                 case "transition": Setup(); _sink += _t.FindTransitionalPosition() ? 1 : 0; break;
-                case "collect": _sink += _engine.Collect(_t, true, _state).Next.Position.Frame.Origin.Y; break;
+                case "collect": _sink += PhysicsEngine.Collect(_t, true, _state).Next.Position.Frame.Origin.Y; break;
                 case "cell-array": _sink += _t.BuildCellArray(true)!.Id; break;
                 case "land": _sink += (int)_cell.FindEnvCollisions(_t); break;
                 case "objects": _sink += (int)ObjectCollisions.FindInCell(_t, _cell.Id, _objects); break;

@@ -185,7 +185,7 @@ internal static class ObjectCollisions
     {
         var path = transition.SpherePath;
         var shape = row.Shape;
-        switch (shape.Kind)
+        switch (row.Kind)
         {
             case ShadowShapeKind.Bsp:
                 return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);

@@ -20,8 +20,8 @@ internal sealed class RotationInterpolationMemo
     /// <summary>Bit for bit <see cref="Frame.InterpolatedRotation"/> of the same arguments.</summary>
     public Quaternion Between(in Frame from, in Frame to, float t)
     {
-        var fromKey = from.Orientation.AsVector128().AsInt32();
-        var toKey = to.Orientation.AsVector128().AsInt32();
+        var fromKey = from.OrientationKey;
+        var toKey = to.OrientationKey;
         if (!_valid || !fromKey.Equals(_from) || !toKey.Equals(_to) || System.BitConverter.SingleToInt32Bits(t) != System.BitConverter.SingleToInt32Bits(_t))
         {
             _result = Frame.InterpolatedRotation(from, to, t);

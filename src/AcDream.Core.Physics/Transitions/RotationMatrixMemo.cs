@@ -22,7 +22,7 @@ internal sealed class RotationMatrixMemo
     /// <summary>The matrix of <paramref name="frame"/>'s orientation: bit for bit <see cref="Frame.Matrix"/>.</summary>
     public ref readonly RotationMatrix Of(in Frame frame)
     {
-        var key = frame.Orientation.AsVector128().AsInt32();
+        var key = frame.OrientationKey;
         if (!_valid || !key.Equals(_for))
         {
             _matrix = frame.Matrix;

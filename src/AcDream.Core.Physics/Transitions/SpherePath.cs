@@ -1,5 +1,5 @@
-using System.Runtime.CompilerServices;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
@@ -201,8 +201,8 @@ internal sealed class SpherePath
         // A move usually starts where the previous one ended, whose spheres were computed for the very
         // same position and spheres: the same transforms of the same inputs give the same bits.
         ref var last = ref _lastCurrent;
-        if (!last.Valid || last.NumSphere != NumSphere || !SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres)
-            || !SameBits(LocalLowPoint, last.LowPointLocal))
+        // The local low point is a function of sphere 0 (InitSphere), so the spheres' bits are the whole key.
+        if (!last.Valid || last.NumSphere != NumSphere || !SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres))
         {
             ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
             for (int i = 0; i < NumSphere; i++)
@@ -211,7 +211,6 @@ internal sealed class SpherePath
             last.For = CurPos;
             last.NumSphere = NumSphere;
             last.Spheres = LocalSphere;
-            last.LowPointLocal = LocalLowPoint;
             last.Valid = true;
         }
         for (int i = 0; i < NumSphere; i++)
@@ -233,20 +232,20 @@ internal sealed class SpherePath
         public Position For;
         public int NumSphere;
         public SpherePair Spheres;
-        public Vector3 LowPointLocal;
         public SpherePair Centres;
         public Vector3 LowPoint;
     }
 
     private CurrentSpheres _lastCurrent;
 
-    private static bool SameSpheres(in SpherePair a, in SpherePair b) =>
-        SameBits(a[0].Center, b[0].Center) && BitEq(a[0].Radius, b[0].Radius)
-        && SameBits(a[1].Center, b[1].Center) && BitEq(a[1].Radius, b[1].Radius);
-
-    private static bool BitEq(float a, float b) => System.BitConverter.SingleToInt32Bits(a) == System.BitConverter.SingleToInt32Bits(b);
-
-    private static bool SameBits(Vector3 a, Vector3 b) => a.AsVector128().AsInt32().Equals(b.AsVector128().AsInt32());
+    /// <summary>True when two sphere pairs are the same bits (32 bytes: two centres and radii).</summary>
+    private static bool SameSpheres(in SpherePair a, in SpherePair b)
+    {
+        ref byte x = ref Unsafe.As<SpherePair, byte>(ref Unsafe.AsRef(in a));
+        ref byte y = ref Unsafe.As<SpherePair, byte>(ref Unsafe.AsRef(in b));
+        return Unsafe.ReadUnaligned<Vector128<byte>>(ref x) == Unsafe.ReadUnaligned<Vector128<byte>>(ref y)
+            && Unsafe.ReadUnaligned<Vector128<byte>>(ref Unsafe.Add(ref x, 16)) == Unsafe.ReadUnaligned<Vector128<byte>>(ref Unsafe.Add(ref y, 16));
+    }
 
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
@@ -287,10 +286,7 @@ internal sealed class SpherePath
     private bool _currCentersValid;
 
     /// <summary>True when two positions are identical bit for bit (so any function of them gives identical results).</summary>
-    internal static bool SameBits(in Position a, in Position b) =>
-        a.CellId == b.CellId
-        && a.Frame.Origin.AsVector128().AsInt32().Equals(b.Frame.Origin.AsVector128().AsInt32())
-        && a.Frame.Orientation.AsVector128().AsInt32().Equals(b.Frame.Orientation.AsVector128().AsInt32());
+    internal static bool SameBits(in Position a, in Position b) => Position.SameBits(a, b);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)

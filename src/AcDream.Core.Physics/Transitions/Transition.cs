@@ -100,14 +100,28 @@ internal sealed partial class Transition
         var path = SpherePath;
         if (path.BeginCell is null)
             return false;
-        var state = TransitionState.OK;
-        Vector3 offset = Vector3.Zero, perStep = Vector3.Zero;
-        int numSteps = 1;
+        var plan = new StepPlan { NumSteps = 1 };
         if (path.HasBeginPos)
         {
-            offset = path.BeginPos.GetOffset(path.EndPos);
-            numSteps = CalcNumSteps(offset, path.LocalSphere[0].Radius * _subStepScale, IsViewer, out perStep);
+            plan.Offset = path.BeginPos.GetOffset(path.EndPos);
+            plan.NumSteps = CalcNumSteps(plan.Offset, path.LocalSphere[0].Radius * _subStepScale, IsViewer, out plan.PerStep);
         }
+        return FindTransitionalPosition(in plan);
+    }
+
+    /// <summary>
+    /// <see cref="FindTransitionalPosition()"/> with the step count (and perhaps the first sub-step's
+    /// constrained motion) already worked out from this path's begin and end positions, sphere and
+    /// carried contact state.
+    /// </summary>
+    internal bool FindTransitionalPosition(in StepPlan plan)
+    {
+        var path = SpherePath;
+        if (path.BeginCell is null)
+            return false;
+        var state = TransitionState.OK;
+        Vector3 offset = plan.Offset, perStep = plan.PerStep;
+        int numSteps = plan.NumSteps;
         if (numSteps > PhysicsConstants.MaxSubSteps)
             return false;
         bool freeRotate = (ObjectInfo.State & ObjectInfoState.FreeRotate) != 0;
@@ -135,7 +149,15 @@ internal sealed partial class Transition
                 if (length > PhysicsConstants.Epsilon)
                     perStep = Scale(offset, (length - (double)(path.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
             }
-            path.GlobalOffset = AdjustOffset(perStep);
+            if (step == 0 && plan.FirstKnown)
+            {
+                CollisionInfo.SlidingNormalValid = plan.FirstSlidingNormalValid;
+                path.GlobalOffset = LiftOntoContactPlane(plan.FirstOffset);
+            }
+            else
+            {
+                path.GlobalOffset = AdjustOffset(perStep);
+            }
             if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
                 return step != 0 && state == TransitionState.OK;
             if (!freeRotate)
@@ -177,7 +199,16 @@ internal sealed partial class Transition
     public Vector3 AdjustOffset(Vector3 offset)
     {
         var ci = CollisionInfo;
-        offset = ConstrainOffset(offset, ref ci.SlidingNormalValid, ci.SlidingNormal, ci.ContactPlaneValid, ci.ContactPlane);
+        return LiftOntoContactPlane(ConstrainOffset(offset, ref ci.SlidingNormalValid, ci.SlidingNormal, ci.ContactPlaneValid, ci.ContactPlane));
+    }
+
+    /// <summary>
+    /// The second half of retail adjust_offset: lifts the check position back onto the contact plane when
+    /// it has sunk into it; returns the (constrained) offset unchanged.
+    /// </summary>
+    private Vector3 LiftOntoContactPlane(Vector3 offset)
+    {
+        var ci = CollisionInfo;
         if (!ci.ContactPlaneValid || ci.ContactPlaneCellId == 0 || ci.ContactPlaneIsWater)
             return offset;
         var sphere = SpherePath.GlobalSphere[0];
@@ -226,24 +257,32 @@ internal sealed partial class Transition
     /// sub-step's motion, constrained by the carried sliding normal and contact plane, is shorter than
     /// EPSILON (a mover pushing into a wall it already slid against). Such a move fails and changes
     /// nothing the caller sees, so the engine answers it without setting up the path (not retail; changes
-    /// no result). Never true for the camera, whose last sub-step differs.
+    /// no result). Never true for the camera, whose last sub-step differs. <paramref name="plan"/> receives
+    /// the step count and the first sub-step's constrained motion, for <see cref="FindTransitionalPosition(in StepPlan)"/>
+    /// once the path is set up from the same mover, state and positions.
     /// </summary>
-    internal bool RefusesBeforeFirstStep(MoverDescription mover, in MoverState state, in Position begin, in Position end)
+    internal bool RefusesBeforeFirstStep(MoverDescription mover, in MoverState state, in Position begin, in Position end, out StepPlan plan)
     {
-        if ((mover.Flags & ObjectInfoState.IsViewer) != 0 || mover.Spheres.Length == 0)
-            return false;
-        var offset = begin.GetOffset(end);
-        // The radius as SpherePath.InitSphere scales it.
+        plan = default;
+        plan.Offset = begin.GetOffset(end);
+        // The radius as SpherePath.InitSphere scales it (a mover has at least one sphere).
         float radius = mover.Spheres[0].Radius * mover.Scale;
-        int numSteps = CalcNumSteps(offset, radius * _subStepScale, false, out var perStep);
-        if (numSteps > PhysicsConstants.MaxSubSteps)
-            return true;
-        if (numSteps <= 0)
+        bool isViewer = (mover.Flags & ObjectInfoState.IsViewer) != 0;
+        plan.NumSteps = CalcNumSteps(plan.Offset, radius * _subStepScale, isViewer, out plan.PerStep);
+        if (isViewer)
             return false;
+        if (plan.NumSteps > PhysicsConstants.MaxSubSteps)
+            return true;
+        if (plan.NumSteps <= 0)
+            return false;
+        // As Prepare carries them into the collision info: the sliding normal's horizontal unit (zero
+        // when none), the contact plane when in contact.
         bool slidingValid = state.SlidingNormalValid;
         var sliding = slidingValid ? CollisionInfo.HorizontalUnit(state.SlidingNormal) : Vector3.Zero;
-        var first = ConstrainOffset(perStep, ref slidingValid, sliding, state.Contact, state.ContactPlane);
-        return first.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
+        plan.FirstOffset = ConstrainOffset(plan.PerStep, ref slidingValid, sliding, state.Contact, state.ContactPlane);
+        plan.FirstSlidingNormalValid = slidingValid;
+        plan.FirstKnown = true;
+        return plan.FirstOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
     }
 
     /// <summary>

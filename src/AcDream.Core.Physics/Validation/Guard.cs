@@ -62,9 +62,17 @@ internal static class Guard
     /// <summary>A plane normal: finite and of unit length (within 1e-3).</summary>
     public static void UnitNormal(Vector3 value, string field, string? suffix = null)
     {
-        Finite(value, field, suffix);
+        // A squared length within 2e-3 of one implies every component is finite and at most ~1 in size,
+        // so the common case is one test; otherwise the finiteness check runs first, for its message.
         if (!(MathF.Abs(value.LengthSquared() - 1f) <= 2e-3f))
-            ThrowNotUnit(value, field, suffix);
+            NotUnit(value, field, suffix);
+    }
+
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void NotUnit(Vector3 value, string field, string? suffix)
+    {
+        Finite(value, field, suffix);
+        ThrowNotUnit(value, field, suffix);
     }
 
     [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
@@ -90,8 +98,10 @@ internal static class Guard
     /// </summary>
     public static Quaternion Rotation(Quaternion q, string field, string? suffix = null)
     {
-        // The common case (a finite rotation retail accepts as it is) inlines; the rest is out of line.
-        if (float.IsFinite(q.X) && float.IsFinite(q.Y) && float.IsFinite(q.Z) && float.IsFinite(q.W) && Physics.Frame.IsValidRotation(q))
+        // The common case (a rotation retail accepts as it is) inlines; the rest is out of line. A rotation
+        // IsValidRotation accepts is finite: an infinite component makes the squared length infinite, a
+        // NaN makes it NaN, and both are refused.
+        if (Physics.Frame.IsValidRotation(q))
             return q;
         return CheckedRotation(q, field, suffix);
     }
@@ -220,7 +230,10 @@ internal static class Guard
     public static void Pose(ref Frame frame, string field)
     {
         Finite(frame.Origin, field, ".origin");
-        frame.Orientation = Rotation(frame.Orientation, field, ".orientation");
+        // A rotation accepted as it is stays as it is: only a normalized one is written back.
+        var q = frame.Orientation;
+        if (!Physics.Frame.IsValidRotation(q))
+            frame.Orientation = CheckedRotation(q, field, ".orientation");
     }
 
     public static void Frame(in Frame frame, string field)

@@ -37,6 +37,8 @@ internal readonly struct ShadowEntry
     public readonly uint EntityId;
     /// <summary>The shape.</summary>
     public readonly ShadowShape Shape;
+    /// <summary>The shape's kind (kept beside the row, so the dispatch reads it without visiting the shape).</summary>
+    public readonly ShadowShapeKind Kind;
     /// <summary>The object's position (cell id and landblock-local frame).</summary>
     public readonly Position Position;
     /// <summary>The object's scale (already applied to <see cref="Shape"/>).</summary>
@@ -65,6 +67,7 @@ internal readonly struct ShadowEntry
     {
         EntityId = entityId;
         Shape = shape;
+        Kind = shape.Kind;
         Position = position;
         Scale = scale;
         State = state;
@@ -79,9 +82,6 @@ internal readonly struct ShadowEntry
             _ => default,
         };
     }
-
-    /// <summary>The shape's kind.</summary>
-    public ShadowShapeKind Kind => Shape.Kind;
 
     /// <inheritdoc />
     public override string ToString() => $"0x{EntityId:X8} {Kind}[{Shape.Index}] state=0x{(uint)State:X}";

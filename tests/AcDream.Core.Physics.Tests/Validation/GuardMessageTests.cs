@@ -1,0 +1,53 @@
+using AcDream.Core.Physics.Validation;
+
+namespace AcDream.Core.Physics.Tests.Validation;
+
+/// <summary>
+/// The per-frame checks answer the common case with one test and build their messages out of line; a bad
+/// value must still get the message that says what is wrong with it.
+/// </summary>
+public class GuardMessageTests
+{
+    [Theory]
+    [InlineData(float.NaN, 0f, 0f, "must be finite")]
+    [InlineData(float.PositiveInfinity, 0f, 0f, "must be finite")]
+    [InlineData(200_000f, 0f, 0f, "must be finite")]
+    [InlineData(0f, 0f, 2f, "must be a unit vector")]
+    [InlineData(0f, 0f, 0f, "must be a unit vector")]
+    public void UnitNormal_SaysWhetherTheNormalIsNotFiniteOrNotUnit(float x, float y, float z, string expected)
+    {
+        var e = Assert.Throws<ArgumentException>(() => Guard.UnitNormal(new Vector3(x, y, z), "plane", ".normal"));
+        Assert.Contains(expected, e.Message, StringComparison.Ordinal);
+        Assert.StartsWith("plane.normal: ", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void UnitNormal_AcceptsAUnitVector() => Guard.UnitNormal(Vector3.Normalize(new Vector3(1, 2, 3)), "plane");
+
+    [Theory]
+    [InlineData(float.NaN, 0f, 0f, 1f, "quaternion must be finite")]
+    [InlineData(0f, float.PositiveInfinity, 0f, 1f, "quaternion must be finite")]
+    [InlineData(0f, 0f, 0f, 0f, "quaternion has zero length")]
+    [InlineData(0f, 0f, 3e19f, 3e19f, "too long to normalize")]
+    public void Pose_SaysWhatIsWrongWithTheRotation(float x, float y, float z, float w, string expected)
+    {
+        var frame = new Frame(Vector3.Zero, new Quaternion(x, y, z, w));
+        var e = Assert.Throws<ArgumentException>(() => Guard.Pose(ref frame, "target"));
+        Assert.Contains(expected, e.Message, StringComparison.Ordinal);
+        Assert.StartsWith("target.orientation: ", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Pose_NormalizesALongRotation_AndKeepsAnAcceptedOneBitForBit()
+    {
+        var frame = new Frame(Vector3.Zero, new Quaternion(0, 0, 0, 2));
+        Guard.Pose(ref frame, "target");
+        Assert.Equal(Quaternion.Identity, frame.Orientation);
+
+        // Within retail's Frame::IsValid tolerance: used as given, not normalized.
+        var nearlyUnit = new Quaternion(0, 0, 0, 1.0002f);
+        frame = new Frame(Vector3.Zero, nearlyUnit);
+        Guard.Pose(ref frame, "target");
+        Assert.Equal(nearlyUnit, frame.Orientation);
+    }
+}
