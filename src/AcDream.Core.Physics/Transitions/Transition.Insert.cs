@@ -203,7 +203,9 @@ internal sealed partial class Transition
                     return state;
             }
         }
-        path.CheckCell = holder;
+        // Usually the check position stays in its cell: then the store (and its GC write barrier) is skipped.
+        if (!ReferenceEquals(path.CheckCell, holder))
+            path.CheckCell = holder;
         if (holder is not null)
         {
             if (holder.Id != path.CheckPos.CellId)

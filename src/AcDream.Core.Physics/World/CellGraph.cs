@@ -92,19 +92,22 @@ public sealed class CellGraph
     {
         cells.Clear();
         uint startId = position.CellId;
-        var start = Get(startId);
+        Cell? start;
         // Retail adds the outside cells again for every land cell in the list (and for each indoor cell with
         // a portal to the outside near a sphere); they depend only on the spheres, so every call after the
         // first adds nothing. Remember that they are in.
         bool outsideAdded = false;
         if (!LandDefs.IsLandCell(startId))
         {
+            start = Get(startId);
             if (path is not null) path.HitsInteriorCell = true;
             if (start is not null) cells.Add(start);
         }
         else
         {
-            AddOutsideCells(startId, spheres, cells);
+            var startLand = _land.Get(startId);
+            start = startLand;
+            AddOutsideCells(startId, startLand, spheres, cells);
             outsideAdded = true;
         }
         if (start is null || spheres.Length == 0)
@@ -156,7 +159,7 @@ public sealed class CellGraph
         {
             if (!outsideAdded)
             {
-                AddOutsideCells(position.CellId, spheres, cells);
+                AddOutsideCells(position.CellId, null, spheres, cells);
                 outsideAdded = true;
             }
             if (land.Building is { } building)
@@ -187,7 +190,7 @@ public sealed class CellGraph
         }
         if (checkOutside && !outsideAdded)
         {
-            AddOutsideCells(position.CellId, spheres, cells);
+            AddOutsideCells(position.CellId, null, spheres, cells);
             outsideAdded = true;
         }
     }
@@ -209,11 +212,23 @@ public sealed class CellGraph
     /// Retail add_all_outside_cells: the outdoor cell under each sphere centre plus the neighbours the
     /// sphere reaches across a cell border (check_add_cell_boundary), across landblocks too.
     /// </summary>
+    /// <remarks>
+    /// <paramref name="startLand"/>, when given, is the land cell <paramref name="startId"/> names: a sphere
+    /// over it (the usual case) takes it instead of looking it up again.
+    /// </remarks>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private void AddOutsideCells(uint startId, ReadOnlySpan<Sphere> spheres, CellArray cells)
+    private void AddOutsideCells(uint startId, LandCell? startLand, ReadOnlySpan<Sphere> spheres, CellArray cells)
     {
         uint block = startId >> 16;
         int blockX = (int)(block >> 8) * 8, blockY = (int)(block & 0xFF) * 8;
+        // The start cell's global cell coordinates (index − 1 = x * 8 + y), when it is a loaded land cell.
+        int startX = -1, startY = -1;
+        if (startLand is not null)
+        {
+            uint index = (startId & 0xFFFF) - 1;
+            startX = blockX + (int)(index >> 3);
+            startY = blockY + (int)(index & 7);
+        }
         for (int i = 0; i < spheres.Length; i++)
         {
             // A sphere over the one before it (the same X, Y and radius, to the bit) adds the same cells again,
@@ -229,8 +244,9 @@ public sealed class CellGraph
             float px = x - fx * PhysicsConstants.LandCellLength;
             float py = y - fy * PhysicsConstants.LandCellLength;
             float min = radius, max = PhysicsConstants.LandCellLength - radius;
-            if (_land.GetLandAtGlobal(gx, gy) is { } centre)
-                cells.Add(centre);
+            var under = gx == startX && gy == startY ? startLand : _land.GetLandAtGlobal(gx, gy);
+            if (under is not null)
+                cells.Add(under);
             if (px > max || px < min || py > max || py < min)
                 AddNeighbours(cells, gx, gy, px, py, min, max);
         }

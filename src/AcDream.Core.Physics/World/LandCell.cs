@@ -16,6 +16,9 @@ public sealed class LandCell : Cell
     // run on every insert.
     private readonly Triangle2D _firstXY;
     private readonly Triangle2D _secondXY;
+    // The cell's square, landblock-local: west and south edges (LandDefs.LandCellCorner), east and north
+    // (those plus the cell length, in float as before).
+    private readonly float _west, _south, _east, _north;
 
     /// <summary>Creates land cell <paramref name="id"/> from its landblock's terrain.</summary>
     internal LandCell(uint id, Terrain terrain) : base(id)
@@ -29,6 +32,9 @@ public sealed class LandCell : Cell
         (_first, _second) = terrain.CellTriangles(x, y);
         _firstXY = new Triangle2D(_first.Vertices);
         _secondXY = new Triangle2D(_second.Vertices);
+        var corner = LandDefs.LandCellCorner(id);
+        (_west, _south) = (corner.X, corner.Y);
+        (_east, _north) = (corner.X + PhysicsConstants.LandCellLength, corner.Y + PhysicsConstants.LandCellLength);
     }
 
     /// <summary>The cell's two terrain triangles (landblock-local), for the world queries.</summary>
@@ -52,12 +58,14 @@ public sealed class LandCell : Cell
     /// <summary>The horizontal distance from the cell's 24 m square.</summary>
     internal override float DistanceOutside(Vector3 point)
     {
-        var corner = LandDefs.LandCellCorner(Id);
-        float size = PhysicsConstants.LandCellLength;
-        float dx = System.MathF.Max(System.MathF.Max(corner.X - point.X, point.X - (corner.X + size)), 0f);
-        float dy = System.MathF.Max(System.MathF.Max(corner.Y - point.Y, point.Y - (corner.Y + size)), 0f);
+        // Inside (the usual case: every move validates its start) the distance is 0: both differences below
+        // are then at most 0, whose maximum with 0 is 0, so the answer is the one computed below.
+        if (point.X >= _west && point.X <= _east && point.Y >= _south && point.Y <= _north)
+            return 0f;
+        float dx = System.MathF.Max(System.MathF.Max(_west - point.X, point.X - _east), 0f);
+        float dy = System.MathF.Max(System.MathF.Max(_south - point.Y, point.Y - _north), 0f);
         if (dx == 0f && dy == 0f)
-            return 0f; // inside: the usual case, without the square root
+            return 0f;
         return System.MathF.Sqrt(dx * dx + dy * dy);
     }
 
@@ -65,6 +73,15 @@ public sealed class LandCell : Cell
     internal override TransitionState FindEnvCollisions(Transition transition)
     {
         var path = transition.SpherePath;
+        if ((path.CheckPos.CellId >> 16) == (Id >> 16))
+        {
+            // The usual case, the check position in this cell's landblock: no offset, so sphere 0 is passed as
+            // it is (subtracting a zero offset would change no bit) and not copied.
+            var triangle = FindTerrainPolygon(path.GlobalLowPoint);
+            if (triangle is null)
+                return TransitionState.OK;
+            return transition.ValidateWalkable(path.GlobalSphere[0], triangle.Plane, isWater: false, waterDepth: 0f, Id);
+        }
         var blockOffset = LandDefs.BlockOffset(path.CheckPos.CellId, Id);
         var walkable = FindTerrainPolygon(path.GlobalLowPoint - blockOffset);
         if (walkable is null)
