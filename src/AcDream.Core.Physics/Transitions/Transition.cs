@@ -65,16 +65,7 @@ internal sealed partial class Transition
         // Retail (CTransition::calc_num_steps, acclient.c:311763) measures the motion, divides it by the
         // radius and scales the per-step offset on the x87 stack at double precision, rounding each
         // per-step component once.
-        double squared = (double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z;
-        // A motion no longer than the radius is one sub-step (none when zero), decided without the square
-        // root and the division: a float's square is exact in double, and a correctly rounded square root
-        // and quotient cannot cross it, so squared <= radius² exactly when dist / radius <= 1.
-        if (!isViewer && squared <= (double)radius * radius)
-        {
-            offsetPerStep = offset;
-            return offset != Vector3.Zero ? 1 : 0;
-        }
-        double dist = Math.Sqrt(squared);
+        double dist = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
         double step = dist / radius;
         if (!isViewer)
         {
@@ -152,7 +143,12 @@ internal sealed partial class Transition
         for (int step = 0; step < numSteps; step++)
         {
             if (IsViewer && step == numSteps - 1)
-                perStep = ViewerLastStep(offset, perStep, numSteps);
+            {
+                // The camera's last step covers exactly what is left of the motion.
+                double length = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
+                if (length > PhysicsConstants.Epsilon)
+                    perStep = Scale(offset, (length - (double)(path.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
+            }
             if (step == 0 && plan.FirstKnown)
             {
                 CollisionInfo.SlidingNormalValid = plan.FirstSlidingNormalValid;
@@ -194,19 +190,6 @@ internal sealed partial class Transition
     }
 
     private bool IsViewer => (ObjectInfo.State & ObjectInfoState.IsViewer) != 0;
-
-    /// <summary>
-    /// The camera's last sub-step covers exactly what is left of the motion. Out of line: inlined, its
-    /// square root was hoisted out of the loop and computed for every mover.
-    /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private Vector3 ViewerLastStep(Vector3 offset, Vector3 perStep, int numSteps)
-    {
-        double length = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
-        if (length > PhysicsConstants.Epsilon)
-            perStep = Scale(offset, (length - (double)(SpherePath.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
-        return perStep;
-    }
 
     /// <summary>
     /// Retail adjust_offset: constrains a sub-step's motion by the sliding normal and the contact plane
