@@ -82,7 +82,7 @@ public sealed partial class PhysicsEngine
             return Refused(state);
         }
         Prepare(t, mover, state);
-        t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
+        t.SpherePath.InitSphere(mover);
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition(in plan);
@@ -129,7 +129,7 @@ public sealed partial class PhysicsEngine
         var t = _transition;
         var airborne = MoverState.Airborne(position);
         Prepare(t, mover, airborne);
-        t.SpherePath.InitSphere(mover.Spheres, mover.Scale);
+        t.SpherePath.InitSphere(mover);
         t.SpherePath.InitPath(cell, null, position);
         bool ok = t.FindPlacementPosition();
         return Collect(t, ok, airborne);

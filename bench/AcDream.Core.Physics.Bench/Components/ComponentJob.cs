@@ -118,7 +118,7 @@ public static class ComponentJob
             var cell = Validate();
             var begin = _state.Position;
             PhysicsEngine.Prepare(_t, _player, _state);
-            _t.SpherePath.InitSphere(_player.Spheres, _player.Scale);
+            _t.SpherePath.InitSphere(_player);
             _t.SpherePath.InitPath(cell, in begin, in _target);
         }
 

@@ -15,21 +15,26 @@ internal sealed class RotationInterpolationMemo
     private Vector128<int> _from, _to;
     private float _t;
     private Quaternion _result;
-    private bool _valid;
+    private bool _valid, _resultIsValid;
 
-    /// <summary>Bit for bit <see cref="Frame.InterpolatedRotation"/> of the same arguments.</summary>
-    public Quaternion Between(in Frame from, in Frame to, float t)
+    /// <summary>
+    /// Bit for bit <see cref="Frame.InterpolatedRotation"/> of the same arguments, and whether
+    /// <see cref="Frame.SetRotation"/> would take it (Frame::IsValid; else the frame keeps its rotation).
+    /// </summary>
+    public bool Between(in Frame from, in Frame to, float t, out Quaternion result)
     {
         var fromKey = from.OrientationKey;
         var toKey = to.OrientationKey;
         if (!_valid || !fromKey.Equals(_from) || !toKey.Equals(_to) || System.BitConverter.SingleToInt32Bits(t) != System.BitConverter.SingleToInt32Bits(_t))
         {
             _result = Frame.InterpolatedRotation(from, to, t);
+            _resultIsValid = Frame.IsValidRotation(_result);
             _from = fromKey;
             _to = toKey;
             _t = t;
             _valid = true;
         }
-        return _result;
+        result = _result;
+        return _resultIsValid;
     }
 }

@@ -108,13 +108,16 @@ internal sealed class SpherePath
     /// <summary>Placement may slide out of overlaps.</summary>
     public bool PlacementAllowsSliding = true;
 
-    /// <summary>Clears every per-move field (keeps the sphere storage), ready for a new transition.</summary>
+    /// <summary>
+    /// Clears every per-move field, ready for a new transition, except the mover's spheres
+    /// (<see cref="NumSphere"/>, <see cref="LocalSphere"/>, <see cref="LocalLowPoint"/>): the move sets
+    /// them next (<see cref="InitSphere(MoverDescription)"/>), and they stay when the mover is the same.
+    /// </summary>
     public void Reset()
     {
-        NumSphere = 0;
-        LocalSphere = default; GlobalSphere = default; LocalSpaceSphere = default;
+        GlobalSphere = default; LocalSpaceSphere = default;
         LocalSpaceCurrCenter = default; GlobalCurrCenter = default;
-        LocalLowPoint = GlobalLowPoint = LocalSpaceZ = GlobalOffset = default;
+        GlobalLowPoint = LocalSpaceZ = GlobalOffset = default;
         LocalSpacePos = BeginPos = EndPos = CurPos = CheckPos = BackupCheckPos = WalkablePos = default;
         BeginCell = CurCell = CheckCell = BackupCell = null;
         HasBeginPos = false;
@@ -161,10 +164,27 @@ internal sealed class SpherePath
         CacheGlobalCurrCenter();
     }
 
-    /// <summary>Sets the mover's spheres (at most two are used, as retail), scaled.</summary>
+    /// <summary>
+    /// Sets a mover's spheres (<see cref="InitSphere(System.ReadOnlySpan{Sphere}, float)"/> of its spheres
+    /// and scale). A description is immutable, so the spheres set for the same one last time are kept.
+    /// </summary>
+    public void InitSphere(MoverDescription mover)
+    {
+        if (ReferenceEquals(mover, _spheresOf))
+            return;
+        InitSphere(mover.Spheres, mover.Scale);
+        _spheresOf = mover;
+    }
+
+    // The mover whose spheres LocalSphere holds, or null when they were set otherwise.
+    private MoverDescription? _spheresOf;
+
+    /// <summary>Sets the mover's spheres (at most two are used, as retail), scaled; an unused second one is zero.</summary>
     public void InitSphere(System.ReadOnlySpan<Sphere> spheres, float scale)
     {
+        _spheresOf = null;
         NumSphere = spheres.Length <= 2 ? spheres.Length : 2;
+        LocalSphere = default;
         for (int i = 0; i < NumSphere; i++)
             LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);

@@ -160,8 +160,8 @@ internal sealed partial class Transition
             }
             if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
                 return step != 0 && state == TransitionState.OK;
-            if (!freeRotate)
-                path.CheckPos.Frame.SetRotation(_interpolation.Between(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps));
+            if (!freeRotate && _interpolation.Between(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps, out var turned))
+                path.CheckPos.Frame.Orientation = turned;
 
             CollisionInfo.SlidingNormalValid = false;
             CollisionInfo.ClearContactPlane();
@@ -405,7 +405,10 @@ internal sealed partial class Transition
         path.CurPos = path.CheckPos;
         path.CurCell = path.CheckCell;
         path.CacheGlobalCurrCenter();
-        path.SetCheckPos(path.CurPos, path.CurCell);
+        // Retail then sets the check position and cell to the current ones, which they already are:
+        // what remains of set_check_pos is the cell list going stale and the check spheres recomputed.
+        path.CellArrayValid = false;
+        path.CacheGlobalSphere();
     }
 
     /// <summary>Retail build_cell_array: the cells the check spheres touch; optionally the one holding sphere 0.</summary>
