@@ -34,7 +34,7 @@ internal static class PolygonQuery
     private static float PlaneDistance(Polygon polygon, Vector3 point)
     {
         var plane = polygon.Plane;
-        return Vector3.Dot(plane.Normal, point) + plane.D;
+        return VectorMath.Dot(plane.Normal, point) + plane.D;
     }
 
     /// <summary>
