@@ -17,7 +17,7 @@ internal static class BspNodeQuery
     private const float Epsilon = PhysicsConstants.Epsilon;
 
     private static float SplitDistance(in BspNode node, Vector3 point)
-        => Vector3.Dot(node.SplitPlane.Normal, point) + node.SplitPlane.D;
+        => VectorMath.Dot(node.SplitPlane.Normal, point) + node.SplitPlane.D;
 
     /// <summary>
     /// Retail BSPNODE/BSPLEAF::sphere_intersects_poly: the first polygon the moving sphere hits from its

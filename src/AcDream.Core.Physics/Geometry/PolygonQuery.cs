@@ -34,7 +34,7 @@ internal static class PolygonQuery
     private static float PlaneDistance(Polygon polygon, Vector3 point)
     {
         var plane = polygon.Plane;
-        return Vector3.Dot(plane.Normal, point) + plane.D;
+        return VectorMath.Dot(plane.Normal, point) + plane.D;
     }
 
     /// <summary>
@@ -77,18 +77,18 @@ internal static class PolygonQuery
             var edge = vertices[i] - start;
             var offset = point - start;
             var inward = Vector3.Cross(normal, edge);
-            float side = Vector3.Dot(offset, inward);
+            float side = VectorMath.Dot(offset, inward);
             if (side < 0f)
             {
                 // Outside this edge: too far from its line means no contact at all.
-                if (inward.LengthSquared() * radiusSquared < side * side)
+                if (VectorMath.Dot(inward, inward) * radiusSquared < side * side)
                     return false;
-                float along = Vector3.Dot(offset, edge);
-                if (along >= 0f && along <= edge.LengthSquared())
+                float along = VectorMath.Dot(offset, edge);
+                if (along >= 0f && along <= VectorMath.Dot(edge, edge))
                     return true;
                 result = false;
             }
-            if (offset.LengthSquared() <= radiusSquared)
+            if (VectorMath.Dot(offset, offset) <= radiusSquared)
                 return true;
         }
         return result;
@@ -135,7 +135,7 @@ internal static class PolygonQuery
         {
             var start = vertices[previous];
             previous = i;
-            if (Vector3.Dot(point - start, Vector3.Cross(normal, vertices[i] - start)) < 0f)
+            if (VectorMath.Dot(point - start, Vector3.Cross(normal, vertices[i] - start)) < 0f)
             {
                 inside = false;
                 break;
@@ -167,7 +167,7 @@ internal static class PolygonQuery
         bool hit = PolygonHitsSpherePrecise(polygon, sphere, ref contactPoint);
         if (hit)
             struckPolygon = polygon;
-        if (Vector3.Dot(movement, polygon.Plane.Normal) >= 0f)
+        if (VectorMath.Dot(movement, polygon.Plane.Normal) >= 0f)
             return false;
         return hit;
     }
@@ -180,7 +180,7 @@ internal static class PolygonQuery
     /// </summary>
     public static bool WalkableHitsSphere(Polygon polygon, in Sphere sphere, Vector3 up, float walkableAllowance)
     {
-        if (!(Vector3.Dot(polygon.Plane.Normal, up) > walkableAllowance))
+        if (!(VectorMath.Dot(polygon.Plane.Normal, up) > walkableAllowance))
             return false;
         return HitsSphere(polygon, sphere);
     }
@@ -226,7 +226,7 @@ internal static class PolygonQuery
             var start = vertices[previous];
             previous = i;
             var inward = Vector3.Cross(planeNormal, vertices[i] - start);
-            if (Vector3.Dot(point - start, inward) < 0f)
+            if (VectorMath.Dot(point - start, inward) < 0f)
             {
                 // Retail normalizes with the length and its reciprocal in double (acclient.c:360396).
                 double inverse = 1.0 / Math.Sqrt((double)inward.X * inward.X + (double)inward.Y * inward.Y + (double)inward.Z * inward.Z);
@@ -250,7 +250,7 @@ internal static class PolygonQuery
         {
             var start = vertices[previous];
             previous = i;
-            if (Vector3.Dot(point - start, Vector3.Cross(normal, vertices[i] - start)) < 0f)
+            if (VectorMath.Dot(point - start, Vector3.Cross(normal, vertices[i] - start)) < 0f)
                 return false;
         }
         return true;

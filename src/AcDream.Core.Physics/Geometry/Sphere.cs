@@ -24,7 +24,7 @@ public struct Sphere
     {
         var delta = other.Center - Center;
         float reach = Radius + other.Radius;
-        return delta.LengthSquared() - reach * reach < PhysicsConstants.Epsilon;
+        return VectorMath.Dot(delta, delta) - reach * reach < PhysicsConstants.Epsilon;
     }
 
     /// <inheritdoc />
