@@ -101,10 +101,19 @@ internal static class Guard
         // The common case (a rotation retail accepts as it is) inlines; the rest is out of line. A rotation
         // IsValidRotation accepts is finite: an infinite component makes the squared length infinite, a
         // NaN makes it NaN, and both are refused.
-        if (Physics.Frame.IsValidRotation(q))
+        if (SurelyValidRotation(q) || Physics.Frame.IsValidRotation(q))
             return q;
         return CheckedRotation(q, field, suffix);
     }
+
+    /// <summary>
+    /// A quick, sufficient test for <see cref="Physics.Frame.IsValidRotation"/>: that accepts a squared
+    /// length within 5 × EPSILON (0.001) of one, summed in double and rounded to float; a float sum of the
+    /// four squares, in any order, is within 3e-7 of that value, so one within 0.0009 of one is accepted
+    /// there too. Anything else (NaN included) takes the exact test.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool SurelyValidRotation(Quaternion q) => MathF.Abs(Quaternion.Dot(q, q) - 1f) <= 0.0009f;
 
     [MethodImpl(MethodImplOptions.NoInlining)]
     private static Quaternion CheckedRotation(Quaternion q, string field, string? suffix)
@@ -232,7 +241,7 @@ internal static class Guard
         Finite(frame.Origin, field, ".origin");
         // A rotation accepted as it is stays as it is: only a normalized one is written back.
         var q = frame.Orientation;
-        if (!Physics.Frame.IsValidRotation(q))
+        if (!SurelyValidRotation(q) && !Physics.Frame.IsValidRotation(q))
             frame.Orientation = CheckedRotation(q, field, ".orientation");
     }
 

@@ -50,4 +50,19 @@ public class GuardMessageTests
         Guard.Pose(ref frame, "target");
         Assert.Equal(nearlyUnit, frame.Orientation);
     }
+
+    [Theory]
+    // Squared lengths just inside and just outside retail's 5 × EPSILON (0.001) of one, beyond the quick test's 0.0009.
+    [InlineData(1.000475f, false)]  // 1.00095
+    [InlineData(0.999525f, false)]  // 0.99905
+    [InlineData(1.00055f, true)]    // 1.0011
+    [InlineData(0.99945f, true)]    // 0.9989
+    public void Pose_FollowsFrameIsValid_AtItsEdge(float w, bool normalized)
+    {
+        var q = new Quaternion(0, 0, 0, w);
+        var frame = new Frame(Vector3.Zero, q);
+        Guard.Pose(ref frame, "target");
+        Assert.Equal(normalized ? Quaternion.Identity : q, frame.Orientation);
+        Assert.Equal(normalized ? Quaternion.Identity : q, Guard.Rotation(q, "target"));
+    }
 }
