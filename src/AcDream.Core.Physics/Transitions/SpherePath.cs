@@ -225,8 +225,12 @@ internal sealed class SpherePath
         if (!last.Valid || last.NumSphere != NumSphere || !SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres))
         {
             ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
+            // Accepting a sub-step makes the check position current: the object tests there usually
+            // computed its sphere centres already (the same expression on the same inputs).
+            bool fresh = _checkFresh.Valid && SameBits(CurPos, _checkFresh.For);
             for (int i = 0; i < NumSphere; i++)
-                last.Centres[i] = new Sphere(matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin), LocalSphere[i].Radius);
+                last.Centres[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
+                    LocalSphere[i].Radius);
             last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
             last.For = CurPos;
             last.NumSphere = NumSphere;

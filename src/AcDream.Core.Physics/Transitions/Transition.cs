@@ -158,7 +158,7 @@ internal sealed partial class Transition
             {
                 path.GlobalOffset = AdjustOffset(perStep);
             }
-            if (!IsViewer && path.GlobalOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
+            if (!IsViewer && VectorMath.Dot(path.GlobalOffset, path.GlobalOffset) < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon)
                 return step != 0 && state == TransitionState.OK;
             if (!freeRotate && _interpolation.Between(path.BeginPos.Frame, path.EndPos.Frame, (float)(step + 1) / numSteps, out var turned))
                 path.CheckPos.Frame.Orientation = turned;
@@ -231,7 +231,7 @@ internal sealed partial class Transition
     internal static Vector3 ConstrainOffset(Vector3 offset, ref bool slidingNormalValid, Vector3 slidingNormal, bool contactPlaneValid, in Plane contactPlane)
     {
         bool slide = false;
-        float slideAngle = Vector3.Dot(offset, slidingNormal);
+        float slideAngle = VectorMath.Dot(offset, slidingNormal);
         if (slidingNormalValid)
         {
             if (slideAngle < 0.0f) slide = true;
@@ -240,7 +240,7 @@ internal sealed partial class Transition
         if (!contactPlaneValid)
             return slide ? offset - slidingNormal * slideAngle : offset;
 
-        float planeAngle = Vector3.Dot(offset, contactPlane.Normal);
+        float planeAngle = VectorMath.Dot(offset, contactPlane.Normal);
         if (slide)
         {
             var along = Vector3.Cross(contactPlane.Normal, slidingNormal);
@@ -282,7 +282,7 @@ internal sealed partial class Transition
         plan.FirstOffset = ConstrainOffset(plan.PerStep, ref slidingValid, sliding, state.Contact, state.ContactPlane);
         plan.FirstSlidingNormalValid = slidingValid;
         plan.FirstKnown = true;
-        return plan.FirstOffset.LengthSquared() < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
+        return VectorMath.Dot(plan.FirstOffset, plan.FirstOffset) < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
     }
 
     /// <summary>

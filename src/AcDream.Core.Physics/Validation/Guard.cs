@@ -64,7 +64,7 @@ internal static class Guard
     {
         // A squared length within 2e-3 of one implies every component is finite and at most ~1 in size,
         // so the common case is one test; otherwise the finiteness check runs first, for its message.
-        if (!(MathF.Abs(value.LengthSquared() - 1f) <= 2e-3f))
+        if (!(MathF.Abs(VectorMath.Dot(value, value) - 1f) <= 2e-3f))
             NotUnit(value, field, suffix);
     }
 
