@@ -29,6 +29,13 @@ public class RefusedMoveTests
         return player;
     }
 
+    /// <summary>A player stopped against the door, and a second engine over the same world (no memory yet).</summary>
+    private static (PhysicsEngine Engine, Mover Player) FreshEngineBesidePlayerAgainstTheDoor()
+    {
+        var world = TestScenes.Door();
+        return (new PhysicsEngine(world), PlayerAgainstTheDoor(world));
+    }
+
     private static Position Ahead(in MoverState state, Vector3 offset)
     {
         var target = state.Position;
@@ -39,9 +46,7 @@ public class RefusedMoveTests
     [Fact]
     public void PushingIntoTheWallAlreadySlidAgainst_IsRefused_AndChangesNothing()
     {
-        var world = TestScenes.Door();
-        var player = PlayerAgainstTheDoor(world);
-        var engine = new PhysicsEngine(world);
+        var (engine, player) = FreshEngineBesidePlayerAgainstTheDoor();
         var state = player.State;
 
         for (int frame = 0; frame < 3; frame++)
@@ -77,9 +82,7 @@ public class RefusedMoveTests
     [Fact]
     public void TheSameRequestWithoutItsSlidingNormal_IsNotAnsweredFromTheLastRefusal()
     {
-        var world = TestScenes.Door();
-        var player = PlayerAgainstTheDoor(world);
-        var engine = new PhysicsEngine(world);
+        var (engine, player) = FreshEngineBesidePlayerAgainstTheDoor();
         var state = player.State;
         Assert.False(engine.Resolve(player.Description, state, Ahead(state, HeadOn)).Succeeded);
 
@@ -96,9 +99,7 @@ public class RefusedMoveTests
     [Fact]
     public void AnotherMoverWithTheSameRequest_IsNotAnsweredFromTheLastRefusal()
     {
-        var world = TestScenes.Door();
-        var player = PlayerAgainstTheDoor(world);
-        var engine = new PhysicsEngine(world);
+        var (engine, player) = FreshEngineBesidePlayerAgainstTheDoor();
         var state = player.State;
         var target = Ahead(state, HeadOn);
         Assert.False(engine.Resolve(player.Description, state, target).Succeeded);
