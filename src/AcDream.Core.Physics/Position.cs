@@ -22,12 +22,20 @@ public struct Position
     /// <summary>
     /// True when two positions are the same bits: cell id, origin and the orientation as stored (so any
     /// function of them gives identical results). A position is 32 bytes with no padding (the cell id and
-    /// seven floats; a test pins the size), compared in one go.
+    /// seven floats; a test pins the size).
     /// </summary>
-    internal static bool SameBits(in Position a, in Position b)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static bool SameBits(in Position a, in Position b) => SameBytes32(a, b);
+
+    /// <summary>
+    /// True when two values of a 32-byte type with no padding hold the same bytes, compared in one or two
+    /// vector loads (the memo keys: positions, sphere pairs).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static bool SameBytes32<T>(in T a, in T b) where T : struct
     {
-        ref byte x = ref Unsafe.As<Position, byte>(ref Unsafe.AsRef(in a));
-        ref byte y = ref Unsafe.As<Position, byte>(ref Unsafe.AsRef(in b));
+        ref byte x = ref Unsafe.As<T, byte>(ref Unsafe.AsRef(in a));
+        ref byte y = ref Unsafe.As<T, byte>(ref Unsafe.AsRef(in b));
         if (Vector256.IsHardwareAccelerated)
             return Unsafe.ReadUnaligned<Vector256<byte>>(ref x) == Unsafe.ReadUnaligned<Vector256<byte>>(ref y);
         return Unsafe.ReadUnaligned<Vector128<byte>>(ref x) == Unsafe.ReadUnaligned<Vector128<byte>>(ref y)

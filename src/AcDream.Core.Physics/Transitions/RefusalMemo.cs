@@ -38,17 +38,15 @@ internal struct RefusalMemo
 
     /// <summary>True when this request is, bit for bit, the one last refused.</summary>
     public readonly bool Matches(MoverDescription mover, in MoverState state, in Position target) =>
-        _valid && ReferenceEquals(mover, _mover) && SameBits(target, _target) && SameBits(state, _state);
+        _valid && ReferenceEquals(mover, _mover) && Position.SameBits(target, _target) && SameBits(state, _state);
 
     private static bool SameBits(in MoverState a, in MoverState b) =>
-        SameBits(a.Position, b.Position)
+        Position.SameBits(a.Position, b.Position)
         && a.Contact == b.Contact && a.OnWalkable == b.OnWalkable
         && a.ContactPlaneCellId == b.ContactPlaneCellId && a.ContactPlaneIsWater == b.ContactPlaneIsWater
         && Bits(a.ContactPlane.Normal, a.ContactPlane.D).Equals(Bits(b.ContactPlane.Normal, b.ContactPlane.D))
         && a.SlidingNormalValid == b.SlidingNormalValid
         && Bits(a.SlidingNormal, 0f).Equals(Bits(b.SlidingNormal, 0f));
-
-    private static bool SameBits(in Position a, in Position b) => SpherePath.SameBits(a, b);
 
     private static Vector128<int> Bits(Vector3 v, float w) => new Vector4(v, w).AsVector128().AsInt32();
 }

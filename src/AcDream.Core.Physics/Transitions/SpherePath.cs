@@ -1,6 +1,5 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 
@@ -222,12 +221,12 @@ internal sealed class SpherePath
         // same position and spheres: the same transforms of the same inputs give the same bits.
         ref var last = ref _lastCurrent;
         // The local low point is a function of sphere 0 (InitSphere), so the spheres' bits are the whole key.
-        if (!last.Valid || last.NumSphere != NumSphere || !SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres))
+        if (!last.Valid || last.NumSphere != NumSphere || !Position.SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres))
         {
             ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
             // Accepting a sub-step makes the check position current: the object tests there usually
             // computed its sphere centres already (the same expression on the same inputs).
-            bool fresh = _checkFresh.Valid && SameBits(CurPos, _checkFresh.For);
+            bool fresh = _checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For);
             for (int i = 0; i < NumSphere; i++)
                 last.Centres[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
                     LocalSphere[i].Radius);
@@ -241,8 +240,6 @@ internal sealed class SpherePath
             GlobalCurrCenter[i] = last.Centres[i];
         // Retail sets the check position to the current one right after this (init_path, and accepting a
         // sub-step); remember what was computed so that CacheGlobalSphere can copy it instead.
-        _currLowPoint = last.LowPoint;
-        _currCentersFor = CurPos;
         _currCentersValid = true;
         // These are also the first half of Position::localtolocal for the current position (the same
         // expression on the same inputs), which the object tests would otherwise compute again.
@@ -262,24 +259,18 @@ internal sealed class SpherePath
 
     private CurrentSpheres _lastCurrent;
 
-    /// <summary>True when two sphere pairs are the same bits (32 bytes: two centres and radii).</summary>
-    private static bool SameSpheres(in SpherePair a, in SpherePair b)
-    {
-        ref byte x = ref Unsafe.As<SpherePair, byte>(ref Unsafe.AsRef(in a));
-        ref byte y = ref Unsafe.As<SpherePair, byte>(ref Unsafe.AsRef(in b));
-        return Unsafe.ReadUnaligned<Vector128<byte>>(ref x) == Unsafe.ReadUnaligned<Vector128<byte>>(ref y)
-            && Unsafe.ReadUnaligned<Vector128<byte>>(ref Unsafe.Add(ref x, 16)) == Unsafe.ReadUnaligned<Vector128<byte>>(ref Unsafe.Add(ref y, 16));
-    }
+    /// <summary>True when two sphere pairs are the same bits (32 bytes: two centres and radii; a test pins the size).</summary>
+    private static bool SameSpheres(in SpherePair a, in SpherePair b) => Position.SameBytes32(a, b);
 
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
     {
-        if (_currCentersValid && SameBits(CheckPos, _currCentersFor))
+        if (_currCentersValid && Position.SameBits(CheckPos, _lastCurrent.For))
         {
             // The same transforms of the same inputs: copying gives the very same bits.
             for (int i = 0; i < NumSphere; i++)
                 GlobalSphere[i] = GlobalCurrCenter[i];
-            GlobalLowPoint = _currLowPoint;
+            GlobalLowPoint = _lastCurrent.LowPoint;
             return;
         }
         ref readonly var matrix = ref _moverMatrix.LanesOf(CheckPos.Frame);
@@ -304,13 +295,9 @@ internal sealed class SpherePath
     // share one: each keeps the last matrix built.
     private readonly RotationMatrixMemo _moverMatrix = new(), _spaceMatrix = new();
 
-    // What CacheGlobalCurrCenter last computed, and for which position (valid until the spheres change).
-    private Position _currCentersFor;
-    private Vector3 _currLowPoint;
+    // CacheGlobalCurrCenter ran since the spheres were last set, so _lastCurrent holds this move's current
+    // spheres and the position they are for.
     private bool _currCentersValid;
-
-    /// <summary>True when two positions are identical bit for bit (so any function of them gives identical results).</summary>
-    internal static bool SameBits(in Position a, in Position b) => Position.SameBits(a, b);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)
@@ -375,7 +362,7 @@ internal sealed class SpherePath
     /// </summary>
     private ref readonly CentrePair CentresAt(in Position position, ref FreshCentres fresh)
     {
-        if (!fresh.Valid || !SameBits(position, fresh.For))
+        if (!fresh.Valid || !Position.SameBits(position, fresh.For))
         {
             ref readonly var matrix = ref _moverMatrix.LanesOf(position.Frame);
             for (int i = 0; i < NumSphere; i++)

@@ -1,6 +1,6 @@
-using System.Runtime.CompilerServices;
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;

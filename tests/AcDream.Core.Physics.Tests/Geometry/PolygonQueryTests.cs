@@ -164,6 +164,33 @@ public class PolygonQueryTests
         Assert.False(PolygonQuery.PointInPoly2D(ccw, new Vector3(1.001f, 0.5f, 0), Sidedness.Positive));
     }
 
+    [Fact]
+    public void Triangle2D_AnswersAsPointInPoly2DOnThePositiveSide_OnAndAroundItsEdges()
+    {
+        // The terrain's prepared triangles stand in for retail's point_in_poly2D: every answer must agree,
+        // on the edges and vertices too, for both windings and a sloped, off-grid triangle.
+        var triangles = new[]
+        {
+            new Polygon(new Vector3[] { new(0, 0, 0), new(24, 0, 1), new(24, 24, 2) }),
+            new Polygon(new Vector3[] { new(0, 0, 0), new(24, 24, 2), new(0, 24, 1) }),
+            new Polygon(new Vector3[] { new(1.1f, 2.3f, 0), new(17.9f, 0.7f, 3), new(9.5f, 21.1f, -2) }),
+            new Polygon(new Vector3[] { new(0, 0, 0), new(0, 24, 0), new(24, 0, 0) }), // clockwise: never holds a point strictly inside
+        };
+        int checks = 0;
+        foreach (var polygon in triangles)
+        {
+            var prepared = new Triangle2D(polygon.Vertices);
+            for (float x = -1f; x <= 25f; x += 0.375f)
+                for (float y = -1f; y <= 25f; y += 0.375f)
+                {
+                    var point = new Vector3(x, y, 7f);
+                    Assert.Equal(PolygonQuery.PointInPoly2D(polygon, point, Sidedness.Positive), prepared.Contains(point));
+                    checks++;
+                }
+        }
+        Assert.True(checks > 15000, $"{checks} checks");
+    }
+
     [Theory]
     [InlineData(1.5f, 0f, -1f, 0f)]    // crossed x = 1: normal points back in (−X)
     [InlineData(0f, 1.5f, 0f, -1f)]    // crossed y = 1

@@ -205,9 +205,10 @@ public class RememberedWorkTests
 public class SameBitsTests
 {
     [Fact]
-    public void APosition_IsThirtyTwoBytesWithoutPadding_SoItsBitsCompareInOneGo()
+    public void APositionAndASpherePair_AreThirtyTwoBytesWithoutPadding_SoTheirBitsCompareInOneGo()
     {
         Assert.Equal(32, System.Runtime.CompilerServices.Unsafe.SizeOf<Position>());
+        Assert.Equal(32, System.Runtime.CompilerServices.Unsafe.SizeOf<AcDream.Core.Physics.Transitions.SpherePair>());
     }
 
     [Fact]
