@@ -182,7 +182,7 @@ public readonly struct MoveResult
         {
             var path = t.SpherePath;
             _next.Position = path.CurPos;
-            if (path.CurCell is not null)
+            if (path.CurCell is not null && path.CurCell.Id != path.CurPos.CellId)
                 _next.Position.CellId = path.CurCell.Id;
             _next.ContactPlane = ci.ContactPlane;
             _next.ContactPlaneCellId = ci.ContactPlaneCellId;

@@ -70,8 +70,17 @@ public sealed partial class PhysicsEngine
         ArgumentNullException.ThrowIfNull(mover);
         if (_lastRefusal.Matches(mover, state, target))
             return Refused(state);
-        var begin = state.Position;
-        Guard.Pose(ref begin.Frame, "state.position");
+        // The start position is read where it lies, copied only when its rotation must be normalized: a
+        // copy is written a field at a time and the path reads it whole soon after, which waits for the
+        // stores to land.
+        scoped ref readonly Position begin = ref state.Position;
+        Position normalized;
+        if (!Guard.PoseAsGiven(state.Position.Frame, "state.position"))
+        {
+            normalized = state.Position;
+            Guard.Pose(ref normalized.Frame, "state.position");
+            begin = ref normalized;
+        }
         Guard.Pose(ref target.Frame, "target");
         var cell = ValidateState(mover, state, begin, target.CellId);
 
@@ -86,7 +95,7 @@ public sealed partial class PhysicsEngine
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition(in plan);
-        return Collect(t, ok, state);
+        return new MoveResult(t, ok, state);
     }
 
     /// <summary>

@@ -99,7 +99,7 @@ internal sealed class CollisionInfo
     public void SetCollisionNormal(Vector3 normal)
     {
         CollisionNormalValid = true;
-        CollisionNormal = VectorMath.NormalizeCheckSmall(ref normal) ? Vector3.Zero : normal;
+        CollisionNormal = _collisionUnit.NormalizeCheckSmall(ref normal) ? Vector3.Zero : normal;
     }
 
     /// <summary>
@@ -114,11 +114,15 @@ internal sealed class CollisionInfo
     }
 
     /// <summary>The horizontal part of a vector, normalized; zero when too short (the sliding normal's form).</summary>
-    internal static Vector3 HorizontalUnit(Vector3 normal)
+    internal Vector3 HorizontalUnit(Vector3 normal)
     {
         var horizontal = new Vector3(normal.X, normal.Y, 0f);
-        return VectorMath.NormalizeCheckSmall(ref horizontal) ? Vector3.Zero : horizontal;
+        return _slidingUnit.NormalizeCheckSmall(ref horizontal) ? Vector3.Zero : horizontal;
     }
+
+    // The last normals normalized (the same ones return frame after frame while a mover slides).
+    private UnitMemo _slidingUnit;
+    private UnitMemo _collisionUnit;
 
     /// <summary>Adds an object to the collided list once; a non-OK result makes it the last collided.</summary>
     public void AddObject(uint objectId, TransitionState state)

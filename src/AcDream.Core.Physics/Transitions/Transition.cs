@@ -53,6 +53,8 @@ internal sealed partial class Transition
 
     private float _subStepScale = 1f;
     private readonly RotationInterpolationMemo _interpolation = new();
+    // The last line along a sliding normal and the contact plane (adjust_offset's slide), normalized.
+    private UnitMemo _slideLine;
 
     /// <summary>Retail's step-count rule, exposed for tests and tools.</summary>
     /// <param name="offset">The whole motion.</param>
@@ -65,7 +67,17 @@ internal sealed partial class Transition
         // Retail (CTransition::calc_num_steps, acclient.c:311763) measures the motion, divides it by the
         // radius and scales the per-step offset on the x87 stack at double precision, rounding each
         // per-step component once.
-        double dist = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z);
+        double squared = (double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z;
+        // A motion no longer than the radius is one step, known without the square root and division: the
+        // radius squared is exact in double, so squared <= radius² gives dist <= |radius| after the correctly
+        // rounded root, and then dist / radius <= 1 (or NaN for a zero radius, or negative): "step > 1" fails
+        // exactly when retail's does.
+        if (!isViewer && squared <= (double)radius * radius)
+        {
+            offsetPerStep = offset;
+            return offset != Vector3.Zero ? 1 : 0;
+        }
+        double dist = Math.Sqrt(squared);
         double step = dist / radius;
         if (!isViewer)
         {
@@ -199,7 +211,7 @@ internal sealed partial class Transition
     public Vector3 AdjustOffset(Vector3 offset)
     {
         var ci = CollisionInfo;
-        return LiftOntoContactPlane(ConstrainOffset(offset, ref ci.SlidingNormalValid, ci.SlidingNormal, ci.ContactPlaneValid, ci.ContactPlane));
+        return LiftOntoContactPlane(ConstrainOffset(offset, ref ci.SlidingNormalValid, ci.SlidingNormal, ci.ContactPlaneValid, ci.ContactPlane, ref _slideLine));
     }
 
     /// <summary>
@@ -228,7 +240,8 @@ internal sealed partial class Transition
     /// one); otherwise a contact plane takes the part of the motion into it away, or bends a motion away
     /// from it onto it. A sliding normal the motion does not go into stops being valid.
     /// </summary>
-    internal static Vector3 ConstrainOffset(Vector3 offset, ref bool slidingNormalValid, Vector3 slidingNormal, bool contactPlaneValid, in Plane contactPlane)
+    internal static Vector3 ConstrainOffset(Vector3 offset, ref bool slidingNormalValid, Vector3 slidingNormal, bool contactPlaneValid, in Plane contactPlane,
+        ref UnitMemo slideLine)
     {
         bool slide = false;
         float slideAngle = VectorMath.Dot(offset, slidingNormal);
@@ -244,7 +257,7 @@ internal sealed partial class Transition
         if (slide)
         {
             var along = Vector3.Cross(contactPlane.Normal, slidingNormal);
-            return VectorMath.NormalizeCheckSmall(ref along) ? Vector3.Zero : Vector3.Dot(along, offset) * along;
+            return slideLine.NormalizeCheckSmall(ref along) ? Vector3.Zero : Vector3.Dot(along, offset) * along;
         }
         if (planeAngle <= 0.0f)
             return offset - contactPlane.Normal * planeAngle;
@@ -279,7 +292,7 @@ internal sealed partial class Transition
         // when none), the contact plane when in contact.
         bool slidingValid = state.SlidingNormalValid;
         var sliding = slidingValid ? CollisionInfo.HorizontalUnit(state.SlidingNormal) : Vector3.Zero;
-        plan.FirstOffset = ConstrainOffset(plan.PerStep, ref slidingValid, sliding, state.Contact, state.ContactPlane);
+        plan.FirstOffset = ConstrainOffset(plan.PerStep, ref slidingValid, sliding, state.Contact, state.ContactPlane, ref _slideLine);
         plan.FirstSlidingNormalValid = slidingValid;
         plan.FirstKnown = true;
         return VectorMath.Dot(plan.FirstOffset, plan.FirstOffset) < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;

@@ -238,11 +238,20 @@ internal static class Guard
     /// </summary>
     public static void Pose(ref Frame frame, string field)
     {
+        if (!PoseAsGiven(frame, field))
+            frame.Orientation = CheckedRotation(frame.Orientation, field, ".orientation");
+    }
+
+    /// <summary>
+    /// <see cref="Pose"/> without writing: checks the origin and returns whether the rotation is used as
+    /// given; false when it must be normalized (or refused) by <see cref="Pose"/>.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool PoseAsGiven(in Frame frame, string field)
+    {
         Finite(frame.Origin, field, ".origin");
-        // A rotation accepted as it is stays as it is: only a normalized one is written back.
         var q = frame.Orientation;
-        if (!SurelyValidRotation(q) && !Physics.Frame.IsValidRotation(q))
-            frame.Orientation = CheckedRotation(q, field, ".orientation");
+        return SurelyValidRotation(q) || Physics.Frame.IsValidRotation(q);
     }
 
     public static void Frame(in Frame frame, string field)

@@ -30,6 +30,45 @@ public class SubStepTests
             Assert.Equal(distance / n, perStep.Y, 5);
     }
 
+    /// <summary>
+    /// A motion no longer than the radius is answered without the square root; around that boundary (a few
+    /// float steps either side, along an axis and diagonally, and for zero, negative and NaN radii) the count
+    /// and per-step offset are retail's rule worked out here in full: n = ceil(d / r) when d / r > 1, else
+    /// 1 for any motion and 0 for none.
+    /// </summary>
+    [Fact]
+    public void CalcNumSteps_AtTheRadius_FollowsRetailsFullRule()
+    {
+        var offsets = new List<Vector3>();
+        foreach (float r in new[] { 0.48f, 0.5f, 0.3f })
+        {
+            float along = r;
+            for (int k = 0; k < 6; k++) along = MathF.BitDecrement(along);
+            for (int k = 0; k < 12; k++, along = MathF.BitIncrement(along))
+            {
+                offsets.Add(new Vector3(0, along, 0));
+                float side = along / MathF.Sqrt(2f);
+                offsets.Add(new Vector3(side, side, 0));
+                offsets.Add(new Vector3(side, 0, -side));
+            }
+        }
+        offsets.Add(Vector3.Zero);
+        offsets.Add(new Vector3(-0f, 0f, -0f));
+        foreach (var offset in offsets)
+            foreach (float radius in new[] { 0.48f, 0.5f, 0.3f, 0f, -0.48f, float.NaN })
+            {
+                double step = Math.Sqrt((double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z) / radius;
+                double count = Math.Ceiling(step);
+                int expected = step > 1.0 ? (count > int.MaxValue ? int.MaxValue : (int)count) : offset != Vector3.Zero ? 1 : 0;
+                int n = Transition.CalcNumSteps(offset, radius, false, out var perStep);
+                Assert.True(expected == n, $"offset {offset:R}, radius {radius:R}: {n} steps, retail {expected}");
+                var expectedPerStep = step > 1.0
+                    ? new Vector3((float)(1.0 / count * offset.X), (float)(1.0 / count * offset.Y), (float)(1.0 / count * offset.Z))
+                    : offset;
+                Assert.True(expectedPerStep.Equals(perStep), $"offset {offset:R}, radius {radius:R}: per step {perStep:R}, retail {expectedPerStep:R}");
+            }
+    }
+
     [Theory]
     [InlineData(0f)]
     [InlineData(-1f)]

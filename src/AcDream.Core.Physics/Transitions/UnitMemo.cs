@@ -1,0 +1,39 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+
+namespace AcDream.Core.Physics.Transitions;
+
+/// <summary>
+/// The last vector given to <see cref="VectorMath.NormalizeCheckSmall"/>, by its bits, and what came out.
+/// A mover sliding along a wall normalizes the same vectors frame after frame (the carried sliding normal,
+/// the line where the wall meets the floor), and the double square root and division are among the longest
+/// waits of such a frame. Not retail; the same input bits give the same output bits, so no result changes.
+/// </summary>
+internal struct UnitMemo
+{
+    private Vector3 _input;
+    private Vector3 _unit;
+    private bool _tooShort;
+    private bool _valid;
+
+    /// <summary><see cref="VectorMath.NormalizeCheckSmall"/>, answered from memory for the same input bits.</summary>
+    public bool NormalizeCheckSmall(ref Vector3 v)
+    {
+        if (_valid && SameBits(v, _input))
+        {
+            v = _unit;
+            return _tooShort;
+        }
+        _input = v;
+        _tooShort = VectorMath.NormalizeCheckSmall(ref v);
+        _unit = v;
+        _valid = true;
+        return _tooShort;
+    }
+
+    private static bool SameBits(Vector3 a, Vector3 b) =>
+        BitConverter.SingleToUInt32Bits(a.X) == BitConverter.SingleToUInt32Bits(b.X)
+        && BitConverter.SingleToUInt32Bits(a.Y) == BitConverter.SingleToUInt32Bits(b.Y)
+        && BitConverter.SingleToUInt32Bits(a.Z) == BitConverter.SingleToUInt32Bits(b.Z);
+}
