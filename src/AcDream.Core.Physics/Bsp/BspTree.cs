@@ -75,7 +75,27 @@ public sealed class BspTree
         _nodes = nodes;
         _polygons = polygons;
         _polygonIndices = polygonIndices;
+        // No vertices: an empty box (min above max), which nothing touches.
+        var min = new Vector3(float.MaxValue);
+        var max = new Vector3(float.MinValue);
+        foreach (var polygon in polygons)
+            foreach (var vertex in polygon.Vertices)
+            {
+                min = Vector3.Min(min, vertex);
+                max = Vector3.Max(max, vertex);
+            }
+        PolygonsMin = min;
+        PolygonsMax = max;
     }
+
+    /// <summary>
+    /// The box of every polygon's vertices, in the tree's space (not retail). A sphere that does not reach
+    /// it touches no polygon, and every polygon test of a move (not the solid tests of placement) then
+    /// misses: see <see cref="Shapes.PartCollision"/>.
+    /// </summary>
+    internal Vector3 PolygonsMin { get; }
+    /// <summary>See <see cref="PolygonsMin"/>.</summary>
+    internal Vector3 PolygonsMax { get; }
 
     /// <summary>The nodes; index 0 is the root.</summary>
     internal ReadOnlySpan<BspNode> Nodes => _nodes;

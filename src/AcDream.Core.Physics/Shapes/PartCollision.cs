@@ -11,6 +11,35 @@ internal static class PartCollision
     /// Expresses the path in the part's space, and when a mover sphere touches the model's bounding
     /// sphere, runs the BSP query (the placement insert for an initial placement).
     /// </summary>
+    /// <summary>
+    /// False when <see cref="Collide"/> would return OK and change nothing but the path's local-space spheres
+    /// (not retail; retail runs the test): in a move's insert (neither placement nor an ethereal obstruction,
+    /// whose solid tests are not polygon tests), no check sphere reaches the box of the part's polygons.
+    /// Every other branch of the BSP query (walkable check, step down, step-up search, contact, path
+    /// clipped, free) needs a polygon within a sphere's radius of its centre — the precise hit test — before
+    /// it changes anything, and a sphere whose box misses the polygons' box is farther than its radius from
+    /// all of them. The local-space spheres are read only by the test that prepared them.
+    /// </summary>
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    public static bool MayTouchPolygons(SpherePath path, in World.ShadowEntry row)
+    {
+        if (path.InsertType != InsertType.Transition || path.ObstructionEthereal)
+            return true;
+        // The box in the check position's landblock space.
+        var toCheck = LandDefs.BlockOffset(path.CheckPos.CellId, row.PartPosition.CellId);
+        var min = row.PolygonsMin + toCheck;
+        var max = row.PolygonsMax + toCheck;
+        for (int i = 0; i < path.NumSphere; i++)
+        {
+            var s = path.GlobalSphere[i];
+            if (s.Center.X + s.Radius >= min.X && s.Center.X - s.Radius <= max.X
+                && s.Center.Y + s.Radius >= min.Y && s.Center.Y - s.Radius <= max.Y
+                && s.Center.Z + s.Radius >= min.Z && s.Center.Z - s.Radius <= max.Z)
+                return true;
+        }
+        return false;
+    }
+
     public static TransitionState Collide(Transition transition, PhysicsModel model, in Position partPosition, float scale)
     {
         var path = transition.SpherePath;

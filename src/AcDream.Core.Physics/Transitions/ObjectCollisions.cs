@@ -188,6 +188,8 @@ internal static class ObjectCollisions
         switch (row.Kind)
         {
             case ShadowShapeKind.Bsp:
+                if (!PartCollision.MayTouchPolygons(path, row))
+                    return TransitionState.OK;
                 return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z.

@@ -62,6 +62,11 @@ internal readonly struct ShadowEntry
     /// at every test (the same arithmetic, so the same bits).
     /// </summary>
     public readonly Vector3 PlacedPoint;
+    /// <summary>
+    /// BSP rows: a box, in the object's landblock space, holding every polygon of the part as placed and
+    /// scaled, widened by a margin far above float rounding (see <see cref="Shapes.PartCollision"/>).
+    /// </summary>
+    public readonly Vector3 PolygonsMin, PolygonsMax;
 
     internal ShadowEntry(uint entityId, ShadowShape shape, in Position position, float scale, PhysicsState state, ShadowFlags flags, int cylCount, int sphereCount)
     {
@@ -75,12 +80,36 @@ internal readonly struct ShadowEntry
         CylSphereCount = (byte)Math.Min(cylCount, 255);
         SphereCount = (byte)Math.Min(sphereCount, 255);
         PartPosition = shape.Kind == ShadowShapeKind.Bsp ? new Position(position.CellId, position.Frame.Combine(shape.PartFrame)) : default;
+        if (shape.Kind == ShadowShapeKind.Bsp)
+            PlacedPolygonsBox(shape.Model!.Bsp, PartPosition, shape.ModelScale, out PolygonsMin, out PolygonsMax);
         PlacedPoint = shape.Kind switch
         {
             ShadowShapeKind.Cylinder => position.LocalToGlobal(shape.Cylinder.LowPoint),
             ShadowShapeKind.Sphere => position.LocalToGlobal(shape.Sphere.Center),
             _ => default,
         };
+    }
+
+    // The placed corners of the tree's polygon box, boxed again (any rotation), then widened: the tests
+    // see the spheres through a rotation in double and a float rounding of each coordinate.
+    private static void PlacedPolygonsBox(Bsp.BspTree tree, in Position part, float scale, out Vector3 min, out Vector3 max)
+    {
+        var lo = tree.PolygonsMin;
+        var hi = tree.PolygonsMax;
+        min = new Vector3(float.MaxValue);
+        max = new Vector3(float.MinValue);
+        if (lo.X > hi.X)
+            return;
+        for (int corner = 0; corner < 8; corner++)
+        {
+            var local = new Vector3((corner & 1) == 0 ? lo.X : hi.X, (corner & 2) == 0 ? lo.Y : hi.Y, (corner & 4) == 0 ? lo.Z : hi.Z);
+            var placed = part.LocalToGlobal(local * scale);
+            min = Vector3.Min(min, placed);
+            max = Vector3.Max(max, placed);
+        }
+        var margin = new Vector3(0.05f * MathF.Max(1f, scale) + 0.01f);
+        min -= margin;
+        max += margin;
     }
 
     /// <inheritdoc />

@@ -1,0 +1,95 @@
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Tests.Shapes;
+
+/// <summary>
+/// The box of a BSP part's polygons that lets a move skip the part's test when no check sphere reaches it
+/// (<see cref="PartCollision.MayTouchPolygons"/>): it must hold every placed polygon, and it must never
+/// skip a part that a sphere hits by retail's precise polygon test.
+/// </summary>
+public class PolygonBoxTests
+{
+    // The door slab turned 30° about Z and 10° about X, scaled 1.7, standing at (100, 100, 0).
+    private static readonly Quaternion Turn = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 6) * Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI / 18);
+    private const float Scale = 1.7f;
+
+    private static ShadowEntry TurnedDoorRow()
+    {
+        var shapes = ShadowShapeBuilder.FromSetup(TestGeometry.DoorSetup(), Scale);
+        var part = shapes.First(s => s.Kind == ShadowShapeKind.Bsp);
+        var position = new Position(TestGeometry.At(100, 100, 0).CellId, new Frame(new Vector3(100, 100, 0), Turn));
+        return new ShadowEntry(TestScenes.DoorId, part, position, Scale, PhysicsState.HasPhysicsBsp, ShadowFlags.None, 0, 0);
+    }
+
+    [Fact]
+    public void TheBox_HoldsEveryPolygonVertex_AsPlacedAndScaled()
+    {
+        var row = TurnedDoorRow();
+        foreach (var polygon in row.Shape.Model!.Bsp.Polygons)
+            foreach (var vertex in polygon.Vertices)
+            {
+                var placed = row.PartPosition.LocalToGlobal(vertex * Scale);
+                Assert.True(placed.X >= row.PolygonsMin.X && placed.Y >= row.PolygonsMin.Y && placed.Z >= row.PolygonsMin.Z
+                    && placed.X <= row.PolygonsMax.X && placed.Y <= row.PolygonsMax.Y && placed.Z <= row.PolygonsMax.Z,
+                    $"vertex {vertex} placed at {placed} is outside the box {row.PolygonsMin}..{row.PolygonsMax}");
+            }
+    }
+
+    /// <summary>
+    /// On a grid of spheres around the turned, scaled slab (seen from its own landblock and from the one to
+    /// the east), every sphere that retail's precise test finds touching a polygon is let through; spheres
+    /// clear of the slab but inside its bounding sphere are skipped (the point of the box).
+    /// </summary>
+    [Fact]
+    public void NoSphereThatHitsAPolygon_IsSkipped()
+    {
+        var row = TurnedDoorRow();
+        var polygons = row.Shape.Model!.Bsp.Polygons;
+        var path = new SpherePath { NumSphere = 1, InsertType = InsertType.Transition };
+        var bounds = row.Shape.Bounds;
+        int hits = 0, skippedInsideBounds = 0;
+        foreach (float radius in new[] { 0.48f, 0.2f })
+            for (float x = 97.5f; x <= 102.5f; x += 0.125f)
+                for (float y = 97.5f; y <= 102.5f; y += 0.125f)
+                    for (float z = -0.5f; z <= 4.5f; z += 0.25f)
+                    {
+                        var centre = new Vector3(x, y, z);
+                        var local = row.PartPosition.GlobalToLocalVec(centre - row.PartPosition.Frame.Origin) / Scale;
+                        var localSphere = new Sphere(local, radius / Scale);
+                        bool hit = false;
+                        foreach (var polygon in polygons)
+                            hit |= PolygonQuery.HitsSphere(polygon, localSphere);
+                        foreach (bool east in new[] { false, true })
+                        {
+                            uint cell = row.PartPosition.CellId;
+                            var seen = centre;
+                            if (east)
+                            {
+                                cell += 0x0100_0000;
+                                seen.X -= PhysicsConstants.LandblockLength;
+                            }
+                            path.CheckPos = new Position(cell, seen);
+                            path.GlobalSphere[0] = new Sphere(seen, radius);
+                            bool mayTouch = PartCollision.MayTouchPolygons(path, row);
+                            Assert.True(mayTouch || !hit, $"sphere r {radius} at {centre} (east: {east}) hits a polygon but was skipped");
+                            if (hit) hits++;
+                            if (!mayTouch && Vector3.Distance(centre, row.Position.LocalToGlobal(bounds.Center)) < bounds.Radius + radius) skippedInsideBounds++;
+                        }
+                    }
+        // Placement and an ethereal obstruction run solid tests, which the box does not answer: never skipped.
+        path.CheckPos = new Position(row.PartPosition.CellId, new Vector3(97.5f, 97.5f, 4.5f));
+        path.GlobalSphere[0] = new Sphere(path.CheckPos.Origin, 0.2f);
+        Assert.False(PartCollision.MayTouchPolygons(path, row));
+        path.InsertType = InsertType.Placement;
+        Assert.True(PartCollision.MayTouchPolygons(path, row));
+        path.InsertType = InsertType.Transition;
+        path.ObstructionEthereal = true;
+        Assert.True(PartCollision.MayTouchPolygons(path, row));
+        Assert.True(hits > 1000, $"the grid should graze the slab often; {hits} hits");
+        Assert.True(skippedInsideBounds > 1000, $"the box should skip spheres within the bounding sphere; {skippedInsideBounds} skipped");
+    }
+}
