@@ -114,15 +114,15 @@ internal sealed class SpherePath
     /// </summary>
     public void Reset()
     {
-        GlobalSphere = default; LocalSpaceSphere = default;
-        LocalSpaceCurrCenter = default; GlobalCurrCenter = default;
-        GlobalLowPoint = LocalSpaceZ = GlobalOffset = default;
-        // BeginPos, EndPos and CurPos are written by InitPath, which always follows; CheckPos by the first
-        // SetCheckPos of both searches, before anything reads it; WalkablePos only with Walkable, cleared
-        // here. Retail zeroes them too (SPHEREPATH::init), but no read can see the difference, and these
-        // 160 bytes of stores were ~5 % of a sliding frame. LocalSpacePos stays: a cylinder's step-up reads
-        // it whether or not a BSP test set it in this move.
-        LocalSpacePos = BackupCheckPos = default;
+        // Retail (SPHEREPATH::init) zeroes every field. The spheres and positions that each move writes
+        // before it reads them are left as they are (a test runs every fuzz move on a busy engine and on a
+        // new one): BeginPos, EndPos and CurPos and the current spheres are written by InitPath, which
+        // always follows; CheckPos and the check spheres by the first SetCheckPos of both searches;
+        // the local-space spheres, position and up vector by CacheLocalSpaceSphere before every shape test
+        // that reads them; WalkablePos only with Walkable, cleared below. Sphere entries past NumSphere are
+        // never read. These stores were ~5 % of a sliding frame.
+        GlobalOffset = default;
+        BackupCheckPos = default;
         BeginCell = CurCell = CheckCell = BackupCell = null;
         HasBeginPos = false;
         StepUp = Collide = StepDown = ObstructionEthereal = HitsInteriorCell = BuildingCheck = false;
