@@ -133,8 +133,9 @@ internal sealed class SpherePath
         WalkableCheckPos = default;
         Walkable = null;
         PlacementAllowsSliding = true;
+        // The centres kept for a position (_curFresh, _checkFresh) depend on the spheres too; InitSphere
+        // forgets them when the spheres change.
         _currCentersValid = false;
-        _curFresh.Valid = _checkFresh.Valid = false;
     }
 
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
@@ -226,21 +227,27 @@ internal sealed class SpherePath
         // same position and spheres: the same transforms of the same inputs give the same bits.
         ref var last = ref _lastCurrent;
         // The local low point is a function of sphere 0 (InitSphere), so the spheres' bits are the whole key.
-        if (!last.Valid || last.NumSphere != NumSphere || !Position.SameBits(CurPos, last.For) || !SameSpheres(LocalSphere, last.Spheres))
+        if (last.Valid && last.NumSphere == NumSphere && Position.SameBits(CurPos, last.For) && SameSpheres(LocalSphere, last.Spheres))
         {
-            ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
-            // Accepting a sub-step makes the check position current: the object tests there usually
-            // computed its sphere centres already (the same expression on the same inputs).
-            bool fresh = _checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For);
-            for (int i = 0; i < NumSphere; i++)
-                last.Centres[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
-                    LocalSphere[i].Radius);
-            last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
-            last.For = CurPos;
-            last.NumSphere = NumSphere;
-            last.Spheres = LocalSphere;
-            last.Valid = true;
+            // GlobalCurrCenter is written only below, from the memo, and Reset leaves it: it holds these
+            // centres already, and so does the current position's entry of the object tests, usually.
+            _currCentersValid = true;
+            if (!_curFresh.Valid || !Position.SameBits(CurPos, _curFresh.For))
+                Remember(ref _curFresh, CurPos, GlobalCurrCenter);
+            return;
         }
+        ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
+        // Accepting a sub-step makes the check position current: the object tests there usually
+        // computed its sphere centres already (the same expression on the same inputs).
+        bool fresh = _checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For);
+        for (int i = 0; i < NumSphere; i++)
+            last.Centres[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
+                LocalSphere[i].Radius);
+        last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
+        last.For = CurPos;
+        last.NumSphere = NumSphere;
+        last.Spheres = LocalSphere;
+        last.Valid = true;
         for (int i = 0; i < NumSphere; i++)
             GlobalCurrCenter[i] = last.Centres[i];
         // Retail sets the check position to the current one right after this (init_path, and accepting a
