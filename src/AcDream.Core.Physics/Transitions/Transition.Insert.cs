@@ -269,7 +269,9 @@ internal sealed partial class Transition
             return ValidateViewerWalkable(check, plane);
         var path = SpherePath;
         var ci = CollisionInfo;
-        float dist = Vector3.Dot(check.Center - new Vector3(0, 0, check.Radius), plane.Normal) + plane.D + waterDepth;
+        // The scalar dot product is the vector one's sum and rounding; a zero dist may differ in sign only,
+        // and nothing below reads that sign (the tests against ±EPSILON, and zDist only below -EPSILON).
+        float dist = VectorMath.Dot(check.Center - new Vector3(0, 0, check.Radius), plane.Normal) + plane.D + waterDepth;
         bool mayTakePlane = path.StepDown || (ObjectInfo.State & ObjectInfoState.OnWalkable) == 0 || ObjectInfo.IsValidWalkable(plane.Normal);
         bool reportGround = (ObjectInfo.State & ObjectInfoState.Contact) == 0 && !path.StepDown;
         if (dist >= -PhysicsConstants.Epsilon)

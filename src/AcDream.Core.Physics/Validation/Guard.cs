@@ -113,7 +113,7 @@ internal static class Guard
     /// there too. Anything else (NaN included) takes the exact test.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool SurelyValidRotation(Quaternion q) => MathF.Abs(Quaternion.Dot(q, q) - 1f) <= 0.0009f;
+    private static bool SurelyValidRotation(Quaternion q) => MathF.Abs((q.X * q.X + q.Y * q.Y) + (q.Z * q.Z + q.W * q.W) - 1f) <= 0.0009f;
 
     [MethodImpl(MethodImplOptions.NoInlining)]
     private static Quaternion CheckedRotation(Quaternion q, string field, string? suffix)
