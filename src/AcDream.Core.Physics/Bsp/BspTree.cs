@@ -78,15 +78,30 @@ public sealed class BspTree
         // No vertices: an empty box (min above max), which nothing touches.
         var min = new Vector3(float.MaxValue);
         var max = new Vector3(float.MinValue);
+        var upMin = min;
+        var upMax = max;
         foreach (var polygon in polygons)
+        {
+            bool facesUp = polygon.Plane.Normal.Z > UpFacingZ;
             foreach (var vertex in polygon.Vertices)
             {
                 min = Vector3.Min(min, vertex);
                 max = Vector3.Max(max, vertex);
+                if (facesUp)
+                {
+                    upMin = Vector3.Min(upMin, vertex);
+                    upMax = Vector3.Max(upMax, vertex);
+                }
             }
+        }
         PolygonsMin = min;
         PolygonsMax = max;
+        UpFacingMin = upMin;
+        UpFacingMax = upMax;
     }
+
+    /// <summary>The normal's Z above which a polygon counts as facing up (see <see cref="UpFacingMin"/>).</summary>
+    internal const float UpFacingZ = 1e-3f;
 
     /// <summary>
     /// The box of every polygon's vertices, in the tree's space (not retail). A sphere that does not reach
@@ -96,6 +111,14 @@ public sealed class BspTree
     internal Vector3 PolygonsMin { get; }
     /// <summary>See <see cref="PolygonsMin"/>.</summary>
     internal Vector3 PolygonsMax { get; }
+    /// <summary>
+    /// The box of the polygons whose normal's Z is above <see cref="UpFacingZ"/>, in the tree's space: for a
+    /// part standing upright, the only polygons the walkable searches can take when the walkable allowance
+    /// is at least twice that (their normal must face the world's up more than the allowance).
+    /// </summary>
+    internal Vector3 UpFacingMin { get; }
+    /// <summary>See <see cref="UpFacingMin"/>.</summary>
+    internal Vector3 UpFacingMax { get; }
 
     /// <summary>The nodes; index 0 is the root.</summary>
     internal ReadOnlySpan<BspNode> Nodes => _nodes;

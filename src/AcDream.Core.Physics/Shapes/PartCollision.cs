@@ -25,10 +25,15 @@ internal static class PartCollision
     {
         if (path.InsertType != InsertType.Transition || path.ObstructionEthereal)
             return true;
+        // The walkable check, the step down and the step-up search take only walkable polygons, whose normal
+        // faces the world's up more than the walkable allowance (retail's are 0.0872 and up): with one of at
+        // least twice UpFacingZ, only polygons facing up by more than UpFacingZ qualify, allowing for an
+        // upright part's up being off by 1e-4 and for rounding.
+        bool walkableOnly = (path.CheckWalkable || path.StepDown || path.Collide) && path.WalkableAllowance >= 2f * Bsp.BspTree.UpFacingZ;
         // The box in the check position's landblock space.
         var toCheck = LandDefs.BlockOffset(path.CheckPos.CellId, row.PartPosition.CellId);
-        var min = row.PolygonsMin + toCheck;
-        var max = row.PolygonsMax + toCheck;
+        var min = (walkableOnly ? row.WalkableMin : row.PolygonsMin) + toCheck;
+        var max = (walkableOnly ? row.WalkableMax : row.PolygonsMax) + toCheck;
         for (int i = 0; i < path.NumSphere; i++)
         {
             var s = path.GlobalSphere[i];

@@ -67,6 +67,11 @@ internal readonly struct ShadowEntry
     /// scaled, widened by a margin far above float rounding (see <see cref="Shapes.PartCollision"/>).
     /// </summary>
     public readonly Vector3 PolygonsMin, PolygonsMax;
+    /// <summary>
+    /// BSP rows: the box of the polygons a walkable search can take (see <see cref="Bsp.BspTree.UpFacingMin"/>)
+    /// when the part stands upright; otherwise the box of all its polygons.
+    /// </summary>
+    public readonly Vector3 WalkableMin, WalkableMax;
 
     internal ShadowEntry(uint entityId, ShadowShape shape, in Position position, float scale, PhysicsState state, ShadowFlags flags, int cylCount, int sphereCount)
     {
@@ -81,7 +86,18 @@ internal readonly struct ShadowEntry
         SphereCount = (byte)Math.Min(sphereCount, 255);
         PartPosition = shape.Kind == ShadowShapeKind.Bsp ? new Position(position.CellId, position.Frame.Combine(shape.PartFrame)) : default;
         if (shape.Kind == ShadowShapeKind.Bsp)
-            PlacedPolygonsBox(shape.Model!.Bsp, PartPosition, shape.ModelScale, out PolygonsMin, out PolygonsMax);
+        {
+            var tree = shape.Model!.Bsp;
+            PlacedBox(tree.PolygonsMin, tree.PolygonsMax, PartPosition, shape.ModelScale, out PolygonsMin, out PolygonsMax);
+            // Upright: the world's up seen from the part is the part's own up to within 1e-4 on X and Y, so
+            // a polygon whose normal's Z is at most UpFacingZ faces the world's up by at most UpFacingZ
+            // + 2e-4 (see PartCollision.MayTouchPolygons).
+            var up = PartPosition.GlobalToLocalVec(Vector3.UnitZ);
+            if (MathF.Abs(up.X) < 1e-4f && MathF.Abs(up.Y) < 1e-4f && up.Z > 0f)
+                PlacedBox(tree.UpFacingMin, tree.UpFacingMax, PartPosition, shape.ModelScale, out WalkableMin, out WalkableMax);
+            else
+                (WalkableMin, WalkableMax) = (PolygonsMin, PolygonsMax);
+        }
         PlacedPoint = shape.Kind switch
         {
             ShadowShapeKind.Cylinder => position.LocalToGlobal(shape.Cylinder.LowPoint),
@@ -90,12 +106,10 @@ internal readonly struct ShadowEntry
         };
     }
 
-    // The placed corners of the tree's polygon box, boxed again (any rotation), then widened: the tests
+    // The placed corners of a box in the tree's space, boxed again (any rotation), then widened: the tests
     // see the spheres through a rotation in double and a float rounding of each coordinate.
-    private static void PlacedPolygonsBox(Bsp.BspTree tree, in Position part, float scale, out Vector3 min, out Vector3 max)
+    private static void PlacedBox(Vector3 lo, Vector3 hi, in Position part, float scale, out Vector3 min, out Vector3 max)
     {
-        var lo = tree.PolygonsMin;
-        var hi = tree.PolygonsMax;
         min = new Vector3(float.MaxValue);
         max = new Vector3(float.MinValue);
         if (lo.X > hi.X)

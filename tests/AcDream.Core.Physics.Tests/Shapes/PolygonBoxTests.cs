@@ -17,12 +17,67 @@ public class PolygonBoxTests
     private static readonly Quaternion Turn = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 6) * Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI / 18);
     private const float Scale = 1.7f;
 
-    private static ShadowEntry TurnedDoorRow()
+    private static ShadowEntry TurnedDoorRow() => DoorRow(Turn);
+
+    // The slab turned about Z only: it stands upright.
+    private static ShadowEntry UprightDoorRow() => DoorRow(Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 6));
+
+    private static ShadowEntry DoorRow(Quaternion turn)
     {
         var shapes = ShadowShapeBuilder.FromSetup(TestGeometry.DoorSetup(), Scale);
         var part = shapes.First(s => s.Kind == ShadowShapeKind.Bsp);
-        var position = new Position(TestGeometry.At(100, 100, 0).CellId, new Frame(new Vector3(100, 100, 0), Turn));
+        var position = new Position(TestGeometry.At(100, 100, 0).CellId, new Frame(new Vector3(100, 100, 0), turn));
         return new ShadowEntry(TestScenes.DoorId, part, position, Scale, PhysicsState.HasPhysicsBsp, ShadowFlags.None, 0, 0);
+    }
+
+    /// <summary>
+    /// In the walkable searches (step down, the step-up search, the walkable check) only polygons facing the
+    /// world's up more than the walkable allowance count: for the upright slab no sphere that hits such a
+    /// polygon (its top) is skipped, while spheres touching only its faces are; for the tilted slab, and for
+    /// an allowance too small to rule out level faces, the box of all polygons is used.
+    /// </summary>
+    [Theory]
+    [InlineData(true, 0.0871557f)]
+    [InlineData(true, 0.002f)]
+    [InlineData(true, 0.0015f)]
+    [InlineData(false, 0.0871557f)]
+    public void InTheWalkableSearches_NoSphereThatHitsAWalkablePolygon_IsSkipped(bool upright, float allowance)
+    {
+        var row = upright ? UprightDoorRow() : TurnedDoorRow();
+        var polygons = row.Shape.Model!.Bsp.Polygons;
+        var up = row.PartPosition.GlobalToLocalVec(Vector3.UnitZ);
+        int walkableHits = 0, faceOnlySkipped = 0;
+        foreach (var mode in new[] { "stepDown", "collide", "checkWalkable" })
+        {
+            var path = new SpherePath
+            {
+                NumSphere = 1, InsertType = InsertType.Transition, WalkableAllowance = allowance,
+                StepDown = mode == "stepDown", Collide = mode == "collide", CheckWalkable = mode == "checkWalkable",
+            };
+            for (float x = 98f; x <= 102f; x += 0.25f)
+                for (float y = 98f; y <= 102f; y += 0.25f)
+                    for (float z = -0.5f; z <= 4.5f; z += 0.25f)
+                    {
+                        var centre = new Vector3(x, y, z);
+                        var local = new Sphere(row.PartPosition.GlobalToLocalVec(centre - row.PartPosition.Frame.Origin) / Scale, 0.48f / Scale);
+                        bool walkableHit = false, anyHit = false;
+                        foreach (var polygon in polygons)
+                        {
+                            bool hit = PolygonQuery.HitsSphere(polygon, local);
+                            anyHit |= hit;
+                            walkableHit |= hit && PolygonQuery.WalkableHitsSphere(polygon, local, up, allowance);
+                        }
+                        path.CheckPos = new Position(row.PartPosition.CellId, centre);
+                        path.GlobalSphere[0] = new Sphere(centre, 0.48f);
+                        bool mayTouch = PartCollision.MayTouchPolygons(path, row);
+                        Assert.True(mayTouch || !walkableHit, $"{mode}: sphere at {centre} hits a walkable polygon but was skipped");
+                        if (walkableHit) walkableHits++;
+                        if (anyHit && !mayTouch) faceOnlySkipped++;
+                    }
+        }
+        Assert.True(walkableHits > 100, $"the grid should reach the top; {walkableHits} walkable hits");
+        bool walkableBoxUsed = upright && allowance >= 0.002f;
+        Assert.True(walkableBoxUsed == (faceOnlySkipped > 0), $"spheres touching only non-walkable faces skipped: {faceOnlySkipped}");
     }
 
     [Fact]
