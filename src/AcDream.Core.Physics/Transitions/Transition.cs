@@ -276,26 +276,28 @@ internal sealed partial class Transition
     /// </summary>
     internal bool RefusesBeforeFirstStep(MoverDescription mover, in MoverState state, in Position begin, in Position end, out StepPlan plan)
     {
-        plan = default;
-        plan.Offset = begin.GetOffset(end);
+        // Worked out in locals and written to the plan once (it lives in the caller's frame).
+        var offset = begin.GetOffset(end);
         // The radius as SpherePath.InitSphere scales it (a mover has at least one sphere).
         float radius = mover.Spheres[0].Radius * mover.Scale;
         bool isViewer = (mover.Flags & ObjectInfoState.IsViewer) != 0;
-        plan.NumSteps = CalcNumSteps(plan.Offset, radius * _subStepScale, isViewer, out plan.PerStep);
-        if (isViewer)
-            return false;
-        if (plan.NumSteps > PhysicsConstants.MaxSubSteps)
-            return true;
-        if (plan.NumSteps <= 0)
-            return false;
+        int numSteps = CalcNumSteps(offset, radius * _subStepScale, isViewer, out var perStep);
+        if (isViewer || numSteps <= 0 || numSteps > PhysicsConstants.MaxSubSteps)
+        {
+            plan = new StepPlan { Offset = offset, PerStep = perStep, NumSteps = numSteps };
+            return !isViewer && numSteps > PhysicsConstants.MaxSubSteps;
+        }
         // As Prepare carries them into the collision info: the sliding normal's horizontal unit (zero
         // when none), the contact plane when in contact.
         bool slidingValid = state.SlidingNormalValid;
         var sliding = slidingValid ? CollisionInfo.HorizontalUnit(state.SlidingNormal) : Vector3.Zero;
-        plan.FirstOffset = ConstrainOffset(plan.PerStep, ref slidingValid, sliding, state.Contact, state.ContactPlane, ref _slideLine);
-        plan.FirstSlidingNormalValid = slidingValid;
-        plan.FirstKnown = true;
-        return VectorMath.Dot(plan.FirstOffset, plan.FirstOffset) < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
+        var first = ConstrainOffset(perStep, ref slidingValid, sliding, state.Contact, state.ContactPlane, ref _slideLine);
+        plan = new StepPlan
+        {
+            Offset = offset, PerStep = perStep, NumSteps = numSteps,
+            FirstKnown = true, FirstOffset = first, FirstSlidingNormalValid = slidingValid,
+        };
+        return VectorMath.Dot(first, first) < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
     }
 
     /// <summary>
