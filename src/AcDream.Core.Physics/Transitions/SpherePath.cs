@@ -108,9 +108,11 @@ internal sealed class SpherePath
     public bool PlacementAllowsSliding = true;
 
     /// <summary>
-    /// Clears every per-move field, ready for a new transition, except the mover's spheres
-    /// (<see cref="NumSphere"/>, <see cref="LocalSphere"/>, <see cref="LocalLowPoint"/>): the move sets
-    /// them next (<see cref="InitSphere(MoverDescription)"/>), and they stay when the mover is the same.
+    /// Clears the per-move state, ready for a new transition: the flags, cells, walkable and step fields.
+    /// Left as they are: the mover's spheres (<see cref="NumSphere"/>, <see cref="LocalSphere"/>,
+    /// <see cref="LocalLowPoint"/>), which the move sets next (<see cref="InitSphere(MoverDescription)"/>)
+    /// and which stay when the mover is the same, and the positions and spheres every move writes before
+    /// it reads them (listed below).
     /// </summary>
     public void Reset()
     {
