@@ -32,6 +32,13 @@ internal static class VectorMath
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
+    /// <summary>True when two vectors are the same bits (so -0 differs from 0, and a NaN equals its own bits).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool SameBits(Vector3 a, Vector3 b) =>
+        BitConverter.SingleToUInt32Bits(a.X) == BitConverter.SingleToUInt32Bits(b.X)
+        && BitConverter.SingleToUInt32Bits(a.Y) == BitConverter.SingleToUInt32Bits(b.Y)
+        && BitConverter.SingleToUInt32Bits(a.Z) == BitConverter.SingleToUInt32Bits(b.Z);
+
     /// <summary>Signed distance of a point from a plane (normal assumed unit).</summary>
     public static float Distance(in Plane plane, Vector3 point) => Dot(plane.Normal, point) + plane.D;
 

@@ -117,7 +117,7 @@ public static class ParityCheck
                 var actual = result.Next;
                 var position = actual.Position.Frame.Origin;
                 double difference = Distance(position, expected.Position);
-                bool bitIdentical = SameBits(position, expected.Position);
+                bool bitIdentical = Geometry.VectorMath.SameBits(position, expected.Position);
                 maxDifference = Math.Max(maxDifference, difference);
                 if (difference <= Tolerance) within++;
                 if (bitIdentical) identical++;
@@ -179,11 +179,6 @@ public static class ParityCheck
         double dx = (double)a.X - b.X, dy = (double)a.Y - b.Y, dz = (double)a.Z - b.Z;
         return Math.Sqrt(dx * dx + dy * dy + dz * dz);
     }
-
-    private static bool SameBits(Vector3 a, Vector3 b) =>
-        BitConverter.SingleToInt32Bits(a.X) == BitConverter.SingleToInt32Bits(b.X)
-        && BitConverter.SingleToInt32Bits(a.Y) == BitConverter.SingleToInt32Bits(b.Y)
-        && BitConverter.SingleToInt32Bits(a.Z) == BitConverter.SingleToInt32Bits(b.Z);
 
     private static string Ids(ReadOnlySpan<uint> ids)
     {

@@ -1,4 +1,3 @@
-using System;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 
@@ -20,7 +19,7 @@ internal struct UnitMemo
     /// <summary><see cref="VectorMath.NormalizeCheckSmall"/>, answered from memory for the same input bits.</summary>
     public bool NormalizeCheckSmall(ref Vector3 v)
     {
-        if (_valid && SameBits(v, _input))
+        if (_valid && VectorMath.SameBits(v, _input))
         {
             v = _unit;
             return _tooShort;
@@ -31,9 +30,4 @@ internal struct UnitMemo
         _valid = true;
         return _tooShort;
     }
-
-    private static bool SameBits(Vector3 a, Vector3 b) =>
-        BitConverter.SingleToUInt32Bits(a.X) == BitConverter.SingleToUInt32Bits(b.X)
-        && BitConverter.SingleToUInt32Bits(a.Y) == BitConverter.SingleToUInt32Bits(b.Y)
-        && BitConverter.SingleToUInt32Bits(a.Z) == BitConverter.SingleToUInt32Bits(b.Z);
 }
