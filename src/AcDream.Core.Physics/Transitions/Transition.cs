@@ -68,28 +68,24 @@ internal sealed partial class Transition
         // radius and scales the per-step offset on the x87 stack at double precision, rounding each
         // per-step component once.
         double squared = (double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z;
-        // A motion no longer than the radius is one step, known without the square root and division: the
-        // radius squared is exact in double, so squared <= radius² gives dist <= |radius| after the correctly
-        // rounded root, and then dist / radius <= 1 (or NaN for a zero radius, or negative): "step > 1" fails
-        // exactly when retail's does.
-        if (!isViewer && squared <= (double)radius * radius)
-        {
-            offsetPerStep = offset;
-            return offset != Vector3.Zero ? 1 : 0;
-        }
-        double dist = Math.Sqrt(squared);
-        double step = dist / radius;
         if (!isViewer)
         {
-            if (step > 1.0)
+            // A motion no longer than the radius is one step, known without the square root and division:
+            // the radius squared is exact in double, so squared <= radius² gives dist <= |radius| after the
+            // correctly rounded root, and then dist / radius <= 1 (or NaN for a zero radius, or negative):
+            // "step > 1" fails exactly when retail's does.
+            double walk = squared <= (double)radius * radius ? 0.0 : Math.Sqrt(squared) / radius;
+            if (walk > 1.0)
             {
-                double n = Math.Ceiling(step);
+                double n = Math.Ceiling(walk);
                 offsetPerStep = Scale(offset, 1.0 / n);
                 return n > int.MaxValue ? int.MaxValue : (int)n;
             }
             offsetPerStep = offset;
             return offset != Vector3.Zero ? 1 : 0;
         }
+        double dist = Math.Sqrt(squared);
+        double step = dist / radius;
         if (dist <= PhysicsConstants.Epsilon)
         {
             offsetPerStep = Vector3.Zero;
