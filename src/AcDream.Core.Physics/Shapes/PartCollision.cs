@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Transitions;
 
@@ -8,10 +9,6 @@ namespace AcDream.Core.Physics.Shapes;
 internal static class PartCollision
 {
     /// <summary>
-    /// Expresses the path in the part's space, and when a mover sphere touches the model's bounding
-    /// sphere, runs the BSP query (the placement insert for an initial placement).
-    /// </summary>
-    /// <summary>
     /// False when <see cref="Collide"/> would return OK and change nothing but the path's local-space spheres
     /// (not retail; retail runs the test): in a move's insert (neither placement nor an ethereal obstruction,
     /// whose solid tests are not polygon tests), no check sphere reaches the box of the part's polygons.
@@ -20,7 +17,7 @@ internal static class PartCollision
     /// it changes anything, and a sphere whose box misses the polygons' box is farther than its radius from
     /// all of them. The local-space spheres are read only by the test that prepared them.
     /// </summary>
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool MayTouchPolygons(SpherePath path, in World.ShadowEntry row)
     {
         if (path.InsertType != InsertType.Transition || path.ObstructionEthereal)
@@ -29,7 +26,7 @@ internal static class PartCollision
         // faces the world's up more than the walkable allowance (retail's are 0.0872 and up): with one of at
         // least twice UpFacingZ, only polygons facing up by more than UpFacingZ qualify, allowing for an
         // upright part's up being off by 1e-4 and for rounding.
-        bool walkableOnly = (path.CheckWalkable || path.StepDown || path.Collide) && path.WalkableAllowance >= 2f * Bsp.BspTree.UpFacingZ;
+        bool walkableOnly = (path.CheckWalkable || path.StepDown || path.Collide) && path.WalkableAllowance >= 2f * BspTree.UpFacingZ;
         // The box in the check position's landblock space.
         var toCheck = LandDefs.BlockOffset(path.CheckPos.CellId, row.PartPosition.CellId);
         var min = (walkableOnly ? row.WalkableMin : row.PolygonsMin) + toCheck;
@@ -45,6 +42,10 @@ internal static class PartCollision
         return false;
     }
 
+    /// <summary>
+    /// Expresses the path in the part's space, and when a mover sphere touches the model's bounding
+    /// sphere, runs the BSP query (the placement insert for an initial placement).
+    /// </summary>
     public static TransitionState Collide(Transition transition, PhysicsModel model, in Position partPosition, float scale)
     {
         var path = transition.SpherePath;
