@@ -30,4 +30,36 @@ public class PoseRotationTests
         }
         Assert.True(kept > 10_000 && normalized > 10_000, $"both sides of the bound are sampled: {kept} kept, {normalized} normalized");
     }
+
+    /// <summary>
+    /// A move whose start rotation must be normalized (twice the length of a 10° tilt about X) begins its
+    /// path at the normalized start and ends like the move from the unit tilt (to rounding); the caller's
+    /// state is left as it was.
+    /// </summary>
+    [Fact]
+    public void AStartRotationOfLengthTwo_MovesAsTheNormalizedStart()
+    {
+        var world = Support.TestGeometry.FlatWorld();
+        var mover = MoverDescription.Player();
+        var tilt = Quaternion.CreateFromAxisAngle(Vector3.UnitX, MathF.PI / 18);
+        var unit = MoverState.Airborne(Support.TestGeometry.At(100, 100, 3));
+        unit.Position.Frame = new Frame(unit.Position.Frame.Origin, tilt);
+        var doubled = unit;
+        doubled.Position.Frame = new Frame(unit.Position.Frame.Origin, new Quaternion(2 * tilt.X, 2 * tilt.Y, 2 * tilt.Z, 2 * tilt.W));
+        var target = unit.Position;
+        target.Frame.Origin += new Vector3(0.05f, 0.1f, 0);
+
+        var fromUnit = new PhysicsEngine(world).Resolve(mover, unit, target);
+        var engine = new PhysicsEngine(world);
+        var fromDoubled = engine.Resolve(mover, doubled, target);
+
+        var begin = engine.Transition.SpherePath.BeginPos.Frame.Orientation;
+        Assert.True(MathF.Abs(Quaternion.Dot(begin, tilt) - 1f) < 1e-5f, $"the path began from {begin}");
+
+        Assert.True(Vector3.Distance(fromUnit.Position.Frame.Origin, fromDoubled.Position.Frame.Origin) < 1e-5f,
+            $"from the unit tilt {fromUnit.Position.Frame.Origin}, from the doubled one {fromDoubled.Position.Frame.Origin}");
+        Assert.True(MathF.Abs(Quaternion.Dot(fromDoubled.Position.Frame.Orientation, tilt) - 1f) < 1e-5f,
+            $"result rotation {fromDoubled.Position.Frame.Orientation}");
+        Assert.Equal(2 * tilt.W, doubled.Position.Frame.Orientation.W);
+    }
 }
