@@ -25,17 +25,11 @@ public struct Position
     /// seven floats; a test pins the size).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal static bool SameBits(in Position a, in Position b) => SameBytes32(a, b);
-
-    /// <summary>
-    /// True when two values of a 32-byte type with no padding hold the same bytes, compared in one or two
-    /// vector loads (the memo keys: positions, sphere pairs).
-    /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal static bool SameBytes32<T>(in T a, in T b) where T : struct
+    internal static bool SameBits(in Position a, in Position b)
     {
-        ref byte x = ref Unsafe.As<T, byte>(ref Unsafe.AsRef(in a));
-        ref byte y = ref Unsafe.As<T, byte>(ref Unsafe.AsRef(in b));
+        // One or two vector loads per side.
+        ref byte x = ref Unsafe.As<Position, byte>(ref Unsafe.AsRef(in a));
+        ref byte y = ref Unsafe.As<Position, byte>(ref Unsafe.AsRef(in b));
         if (Vector256.IsHardwareAccelerated)
             return Unsafe.ReadUnaligned<Vector256<byte>>(ref x) == Unsafe.ReadUnaligned<Vector256<byte>>(ref y);
         return Unsafe.ReadUnaligned<Vector128<byte>>(ref x) == Unsafe.ReadUnaligned<Vector128<byte>>(ref y)

@@ -135,9 +135,8 @@ internal sealed class SpherePath
         WalkableCheckPos = default;
         Walkable = null;
         PlacementAllowsSliding = true;
-        // The centres kept for a position (_curFresh, _checkFresh) depend on the spheres too; InitSphere
-        // forgets them when the spheres change.
-        _currCentersValid = false;
+        // What is remembered for a position (the current spheres, the object tests' centres) stays: it
+        // depends on the position and the spheres only, and InitSphere forgets it when the spheres change.
     }
 
     /// <summary>Starts a path. With no begin position it is a placement at <paramref name="endPos"/>.</summary>
@@ -195,8 +194,8 @@ internal sealed class SpherePath
         for (int i = 0; i < NumSphere; i++)
             LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
-        _currCentersValid = false;
-        _curFresh.Valid = _checkFresh.Valid = false;
+        // Everything remembered for a position depends on the spheres too.
+        _lastCurrent.Valid = _curFresh.Valid = _checkFresh.Valid = false;
     }
 
     /// <summary>Moves the check position and its spheres by an offset.</summary>
@@ -225,61 +224,49 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
-        // A move usually starts where the previous one ended, whose spheres were computed for the very
-        // same position and spheres: the same transforms of the same inputs give the same bits.
+        // A move usually starts where the previous one ended, whose spheres were computed for the very same
+        // position (and spheres: InitSphere forgets them when the spheres change). GlobalCurrCenter is
+        // written only here and Reset leaves it, so it still holds them: the same transforms of the same
+        // inputs would give the same bits.
         ref var last = ref _lastCurrent;
-        // The local low point is a function of sphere 0 (InitSphere), so the spheres' bits are the whole key.
-        if (last.Valid && last.NumSphere == NumSphere && Position.SameBits(CurPos, last.For) && SameSpheres(LocalSphere, last.Spheres))
+        if (!last.Valid || !Position.SameBits(CurPos, last.For))
         {
-            // GlobalCurrCenter is written only below, from the memo, and Reset leaves it: it holds these
-            // centres already, and so does the current position's entry of the object tests, usually.
-            _currCentersValid = true;
-            if (!_curFresh.Valid || !Position.SameBits(CurPos, _curFresh.For))
-                Remember(ref _curFresh, CurPos, GlobalCurrCenter);
-            return;
+            ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
+            // Accepting a sub-step makes the check position current: the object tests there usually
+            // computed its sphere centres already (the same expression on the same inputs).
+            bool fresh = _checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For);
+            for (int i = 0; i < NumSphere; i++)
+                GlobalCurrCenter[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
+                    LocalSphere[i].Radius);
+            // Retail sets the check position to the current one right after this (init_path, and accepting
+            // a sub-step): CacheGlobalSphere copies these instead of computing them again.
+            last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
+            last.For = CurPos;
+            last.Valid = true;
         }
-        ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
-        // Accepting a sub-step makes the check position current: the object tests there usually
-        // computed its sphere centres already (the same expression on the same inputs).
-        bool fresh = _checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For);
-        for (int i = 0; i < NumSphere; i++)
-            last.Centres[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
-                LocalSphere[i].Radius);
-        last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
-        last.For = CurPos;
-        last.NumSphere = NumSphere;
-        last.Spheres = LocalSphere;
-        last.Valid = true;
-        for (int i = 0; i < NumSphere; i++)
-            GlobalCurrCenter[i] = last.Centres[i];
-        // Retail sets the check position to the current one right after this (init_path, and accepting a
-        // sub-step); remember what was computed so that CacheGlobalSphere can copy it instead.
-        _currCentersValid = true;
         // These are also the first half of Position::localtolocal for the current position (the same
         // expression on the same inputs), which the object tests would otherwise compute again.
-        Remember(ref _curFresh, CurPos, GlobalCurrCenter);
+        if (!_curFresh.Valid || !Position.SameBits(CurPos, _curFresh.For))
+            Remember(ref _curFresh, CurPos, GlobalCurrCenter);
     }
 
-    /// <summary>The last spheres computed for a current position, kept from one move to the next.</summary>
+    /// <summary>
+    /// The position <see cref="GlobalCurrCenter"/> was last computed for, and its low point; kept from one
+    /// move to the next, forgotten when the spheres change.
+    /// </summary>
     private struct CurrentSpheres
     {
         public bool Valid;
         public Position For;
-        public int NumSphere;
-        public SpherePair Spheres;
-        public SpherePair Centres;
         public Vector3 LowPoint;
     }
 
     private CurrentSpheres _lastCurrent;
 
-    /// <summary>True when two sphere pairs are the same bits (32 bytes: two centres and radii; a test pins the size).</summary>
-    private static bool SameSpheres(in SpherePair a, in SpherePair b) => Position.SameBytes32(a, b);
-
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
     {
-        if (_currCentersValid && Position.SameBits(CheckPos, _lastCurrent.For))
+        if (_lastCurrent.Valid && Position.SameBits(CheckPos, _lastCurrent.For))
         {
             // The same transforms of the same inputs: copying gives the very same bits.
             for (int i = 0; i < NumSphere; i++)
@@ -308,10 +295,6 @@ internal sealed class SpherePath
     // The mover's orientation changes rarely along a path, and the spaces tested one after another often
     // share one: each keeps the last matrix built.
     private readonly RotationMatrixMemo _moverMatrix = new(), _spaceMatrix = new();
-
-    // CacheGlobalCurrCenter ran since the spheres were last set, so _lastCurrent holds this move's current
-    // spheres and the position they are for.
-    private bool _currCentersValid;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)
