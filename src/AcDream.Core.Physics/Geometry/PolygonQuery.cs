@@ -40,8 +40,8 @@ internal static class PolygonQuery
     /// <summary>
     /// The sphere centre moved along <paramref name="up"/> onto the polygon's plane, as retail's
     /// check_walkable, check_small_walkable and find_crossed_edge project it (acclient.c:360226, :360311,
-    /// :360396): the distance over N·up is a double on the x87 stack; X moves by the double product, Y and Z
-    /// by products first stored as floats. False when the plane is parallel to <paramref name="up"/>
+    /// :360396): the distance over N·up is a double on the x87 stack, and the centre moves as
+    /// <see cref="MoveBack"/> moves it. False when the plane is parallel to <paramref name="up"/>
     /// (|N·up| &lt; EPSILON).
     /// </summary>
     private static bool ProjectAlongUp(Polygon polygon, Vector3 center, Vector3 up, out Vector3 point)
@@ -52,9 +52,17 @@ internal static class PolygonQuery
         if (Math.Abs(upDot) < Epsilon)
             return false;
         double along = ((double)n.Z * center.Z + (double)n.Y * center.Y + (double)center.X * n.X + polygon.Plane.D) / upDot;
-        point = new Vector3((float)(center.X - along * up.X), center.Y - (float)(along * up.Y), center.Z - (float)(along * up.Z));
+        point = MoveBack(center, along, up);
         return true;
     }
+
+    /// <summary>
+    /// <paramref name="point"/> − <paramref name="k"/>·<paramref name="v"/> as retail's x87 code evaluates it
+    /// where it moves a sphere centre (check_walkable, find_crossed_edge, adjust_sphere_to_plane): X by the
+    /// double product, Y and Z by products first stored as floats.
+    /// </summary>
+    private static Vector3 MoveBack(Vector3 point, double k, Vector3 v) =>
+        new((float)(point.X - k * v.X), point.Y - (float)(k * v.Y), point.Z - (float)(k * v.Z));
 
     /// <summary>
     /// The single-pass edge walk shared by retail polygon_hits_sphere, check_walkable and
@@ -229,8 +237,7 @@ internal static class PolygonQuery
             if (VectorMath.Dot(point - start, inward) < 0f)
             {
                 // Retail normalizes with the length and its reciprocal in double (acclient.c:360396).
-                double inverse = 1.0 / Math.Sqrt((double)inward.X * inward.X + (double)inward.Y * inward.Y + (double)inward.Z * inward.Z);
-                normal = new Vector3((float)(inverse * inward.X), (float)(inverse * inward.Y), (float)(inverse * inward.Z));
+                normal = VectorMath.Scale(inward, 1.0 / Math.Sqrt(VectorMath.LengthSquaredWide(inward)));
                 return true;
             }
         }
@@ -289,9 +296,8 @@ internal static class PolygonQuery
     public static bool AdjustSphereToPlane(Polygon polygon, ref Sphere validPos, Vector3 movement, ref float walkInterp)
     {
         // Retail evaluates this on the x87 stack at double precision (acclient.c:359533): the distance, the
-        // approach, the back-off fraction and the new walk fraction stay double; X of the centre is moved by
-        // the double product, Y and Z by products first stored as floats; the walk fraction is stored as a
-        // float before its lower bound is tested.
+        // approach, the back-off fraction and the new walk fraction stay double; the centre moves as MoveBack
+        // moves it; the walk fraction is stored as a float before its lower bound is tested.
         var n = polygon.Plane.Normal;
         var c = validPos.Center;
         double distance = (double)n.Y * c.Y + (double)n.Z * c.Z + (double)c.X * n.X + polygon.Plane.D;
@@ -312,7 +318,7 @@ internal static class PolygonQuery
         float interp = (float)interpWide;
         if (interpWide >= walkInterp || interp < -0.5f)
             return false;
-        validPos.Center = new Vector3((float)(c.X - backOff * movement.X), c.Y - (float)(backOff * movement.Y), c.Z - (float)(backOff * movement.Z));
+        validPos.Center = MoveBack(c, backOff, movement);
         walkInterp = interp;
         return true;
     }

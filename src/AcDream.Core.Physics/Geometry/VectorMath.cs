@@ -16,13 +16,20 @@ internal static class VectorMath
     {
         // Retail (AC1Legacy::Vector3::normalize_check_small, acclient.c:143621) takes the length and its
         // reciprocal on the x87 stack at double precision and rounds each scaled component once.
-        double length = Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+        double length = Math.Sqrt(LengthSquaredWide(v));
         if (length < PhysicsConstants.Epsilon)
             return true;
-        double inverse = 1.0 / length;
-        v = new Vector3((float)(inverse * v.X), (float)(inverse * v.Y), (float)(inverse * v.Z));
+        v = Scale(v, 1.0 / length);
         return false;
     }
+
+    /// <summary>x·x + y·y + z·z in double, summed in that order: a length as retail takes it on the x87 stack.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static double LengthSquaredWide(Vector3 v) => (double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z;
+
+    /// <summary>Each component times a double factor, rounded to float once (retail's scaling on the x87 stack).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Vector3 Scale(Vector3 v, double factor) => new((float)(factor * v.X), (float)(factor * v.Y), (float)(factor * v.Z));
 
     /// <summary>
     /// <see cref="Vector3.Dot"/> as scalar arithmetic: (x·x' + y·y') + z·z', the very sum the vector dot

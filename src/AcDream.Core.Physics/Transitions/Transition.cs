@@ -67,7 +67,7 @@ internal sealed partial class Transition
         // Retail (CTransition::calc_num_steps, acclient.c:311763) measures the motion, divides it by the
         // radius and scales the per-step offset on the x87 stack at double precision, rounding each
         // per-step component once.
-        double squared = (double)offset.X * offset.X + (double)offset.Y * offset.Y + (double)offset.Z * offset.Z;
+        double squared = VectorMath.LengthSquaredWide(offset);
         if (!isViewer)
         {
             // A motion no longer than the radius is one step, known without the square root and division:
@@ -78,7 +78,7 @@ internal sealed partial class Transition
             if (walk > 1.0)
             {
                 double n = Math.Ceiling(walk);
-                offsetPerStep = Scale(offset, 1.0 / n);
+                offsetPerStep = VectorMath.Scale(offset, 1.0 / n);
                 return n > int.MaxValue ? int.MaxValue : (int)n;
             }
             offsetPerStep = offset;
@@ -91,12 +91,10 @@ internal sealed partial class Transition
             offsetPerStep = Vector3.Zero;
             return 0;
         }
-        offsetPerStep = Scale(offset, 1.0 / step);
+        offsetPerStep = VectorMath.Scale(offset, 1.0 / step);
         double floor = Math.Floor(step) + 1;
         return floor > int.MaxValue ? int.MaxValue : (int)floor;
     }
-
-    private static Vector3 Scale(Vector3 v, double factor) => new((float)(factor * v.X), (float)(factor * v.Y), (float)(factor * v.Z));
 
     /// <summary>
     /// Retail find_transitional_position: walks the path from the current position to the end in
@@ -155,7 +153,7 @@ internal sealed partial class Transition
                 // The camera's last step covers exactly what is left of the motion.
                 double length = Math.Sqrt((double)offset.Z * offset.Z + (double)offset.Y * offset.Y + (double)offset.X * offset.X);
                 if (length > PhysicsConstants.Epsilon)
-                    perStep = Scale(offset, (length - (double)(path.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
+                    perStep = VectorMath.Scale(offset, (length - (double)(path.LocalSphere[0].Radius * _subStepScale) * (numSteps - 1)) / length);
             }
             if (step == 0 && plan.FirstKnown)
             {
