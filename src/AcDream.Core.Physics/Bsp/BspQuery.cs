@@ -385,9 +385,7 @@ internal static class BspQuery
         ref readonly var matrix = ref path.LocalSpaceMatrix;
         var normal = matrix.PlaneNormalToGlobal(local.Normal);
         var pointOnPlane = LandDefs.BlockOffset(path.CheckPos.CellId, space.CellId) + matrix.PositionToGlobal(local.Normal * -local.D, space.Frame.Origin);
-        // Retail sums the dot product z, y, x, in double (acclient.c:467672; see RotationMatrix on precision).
-        float d = (float)-((double)normal.Z * pointOnPlane.Z + (double)normal.Y * pointOnPlane.Y + (double)normal.X * pointOnPlane.X);
-        return new Plane(normal, d * scale);
+        return new Plane(normal, VectorMath.PlaneDThrough(normal, pointOnPlane) * scale);
     }
 
     private static void RecordWalkableContact(SpherePath path, CollisionInfo collisions, in Sphere validPos, Polygon polygon, float scale)

@@ -46,6 +46,15 @@ internal static class VectorMath
         && BitConverter.SingleToUInt32Bits(a.Y) == BitConverter.SingleToUInt32Bits(b.Y)
         && BitConverter.SingleToUInt32Bits(a.Z) == BitConverter.SingleToUInt32Bits(b.Z);
 
+    /// <summary>
+    /// The D of the plane with normal <paramref name="normal"/> through <paramref name="point"/>, −(N·P), as
+    /// retail computes it (Plane::Plane, acclient.c:358518; Plane::localtoglobal, :467672): summed z, y, x
+    /// in double on the x87 stack, rounded to float once.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static float PlaneDThrough(Vector3 normal, Vector3 point) =>
+        (float)-((double)normal.Z * point.Z + (double)normal.Y * point.Y + (double)normal.X * point.X);
+
     /// <summary>Signed distance of a point from a plane (normal assumed unit).</summary>
     public static float Distance(in Plane plane, Vector3 point) => Dot(plane.Normal, point) + plane.D;
 

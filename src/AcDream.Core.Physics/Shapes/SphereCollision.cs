@@ -396,9 +396,7 @@ internal static class SphereCollision
     /// </summary>
     internal static void SetRetailContactPlane(Transition transition, Vector3 normal, Vector3 point)
     {
-        // Retail Plane::Plane (acclient.c:358518) sums the dot product on the x87 stack and stores D once.
-        double dot = (double)point.Z * normal.Z + (double)point.Y * normal.Y + (double)point.X * normal.X;
-        var plane = new Plane(normal, (float)-dot);
+        var plane = new Plane(normal, VectorMath.PlaneDThrough(normal, point));
         transition.CollisionInfo.SetContactPlane(plane, isWater: true);
         transition.CollisionInfo.ContactPlaneCellId = transition.SpherePath.CheckPos.CellId;
     }
