@@ -84,9 +84,9 @@ internal readonly struct ShadowEntry
         Flags = flags;
         CylSphereCount = (byte)Math.Min(cylCount, 255);
         SphereCount = (byte)Math.Min(sphereCount, 255);
-        PartPosition = shape.Kind == ShadowShapeKind.Bsp ? new Position(position.CellId, position.Frame.Combine(shape.PartFrame)) : default;
         if (shape.Kind == ShadowShapeKind.Bsp)
         {
+            PartPosition = new Position(position.CellId, position.Frame.Combine(shape.PartFrame));
             var tree = shape.Model!.Bsp;
             PlacedBox(tree.PolygonsMin, tree.PolygonsMax, PartPosition, shape.ModelScale, out PolygonsMin, out PolygonsMax);
             // Upright: the world's up seen from the part is the part's own up to within 1e-4 on X and Y, so
@@ -121,10 +121,16 @@ internal readonly struct ShadowEntry
             min = Vector3.Min(min, placed);
             max = Vector3.Max(max, placed);
         }
-        var margin = new Vector3(0.05f * MathF.Max(1f, scale) + 0.01f);
+        var margin = Margin(scale);
         min -= margin;
         max += margin;
     }
+
+    /// <summary>
+    /// How far the culling boxes (a row's polygon boxes, an object's reach box) are widened beyond what they
+    /// hold: far above the float rounding with which the exact tests see the shapes and the spheres.
+    /// </summary>
+    internal static Vector3 Margin(float scale) => new(0.05f * MathF.Max(1f, scale) + 0.01f);
 
     /// <inheritdoc />
     public override string ToString() => $"0x{EntityId:X8} {Kind}[{Shape.Index}] state=0x{(uint)State:X}";

@@ -354,7 +354,7 @@ public sealed class ShadowObjectRegistry
                 max = Vector3.Max(max, centre + r);
             }
         }
-        var margin = new Vector3(0.05f * MathF.Max(1f, record.Scale) + 0.01f);
+        var margin = ShadowEntry.Margin(record.Scale);
         min -= margin;
         max += margin;
     }
