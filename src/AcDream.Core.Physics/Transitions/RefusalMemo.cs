@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using System.Runtime.Intrinsics;
+using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Transitions;
 
@@ -46,7 +47,7 @@ internal struct RefusalMemo
         && a.ContactPlaneCellId == b.ContactPlaneCellId && a.ContactPlaneIsWater == b.ContactPlaneIsWater
         && Bits(a.ContactPlane.Normal, a.ContactPlane.D).Equals(Bits(b.ContactPlane.Normal, b.ContactPlane.D))
         && a.SlidingNormalValid == b.SlidingNormalValid
-        && Bits(a.SlidingNormal, 0f).Equals(Bits(b.SlidingNormal, 0f));
+        && VectorMath.SameBits(a.SlidingNormal, b.SlidingNormal);
 
     private static Vector128<int> Bits(Vector3 v, float w) => new Vector4(v, w).AsVector128().AsInt32();
 }

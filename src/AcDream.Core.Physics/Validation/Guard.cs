@@ -26,12 +26,12 @@ internal static class Guard
     {
         if (!(MathF.Abs(value.X) <= InputLimits.MaxCoordinate) || !(MathF.Abs(value.Y) <= InputLimits.MaxCoordinate)
             || !(MathF.Abs(value.Z) <= InputLimits.MaxCoordinate))
-            ThrowNotFinite(value, field, suffix);
+            ThrowNotCoordinate(value, field, suffix);
     }
 
-    // The messages are built out of line so that the checks above inline into the per-frame callers.
+    // The message is built out of line so that the checks inline into the per-frame callers.
     [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
-    private static void ThrowNotFinite(Vector3 value, string field, string? suffix) =>
+    private static void ThrowNotCoordinate<T>(T value, string field, string? suffix) =>
         throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
 
     /// <summary>A coordinate: finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
@@ -40,10 +40,6 @@ internal static class Guard
         if (!(MathF.Abs(value) <= InputLimits.MaxCoordinate))
             ThrowNotCoordinate(value, field, suffix);
     }
-
-    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
-    private static void ThrowNotCoordinate(float value, string field, string? suffix) =>
-        throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
 
     /// <summary>As <see cref="Coordinate"/>, returning true, for use in initializers.</summary>
     public static bool CoordinateOk(float value, string field)
