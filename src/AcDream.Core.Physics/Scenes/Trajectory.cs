@@ -50,37 +50,21 @@ public sealed class TrajectoryFrame
     public bool Succeeded { get; init; }
 
     /// <summary>Builds a body frame from its input and the engine's result (copies the collided ids).</summary>
-    public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result)
-    {
-        var frame = From(default, result.Move);
-        return new TrajectoryFrame
-        {
-            Step = step,
-            Velocity = result.Body.Velocity,
-            Quanta = result.Quanta,
-            Position = frame.Position,
-            Cell = frame.Cell,
-            Contact = frame.Contact,
-            OnWalkable = frame.OnWalkable,
-            ContactPlaneValid = frame.ContactPlaneValid,
-            ContactPlane = frame.ContactPlane,
-            ContactPlaneCell = frame.ContactPlaneCell,
-            CollisionNormalValid = frame.CollisionNormalValid,
-            CollisionNormal = frame.CollisionNormal,
-            SlidingNormalValid = frame.SlidingNormalValid,
-            SlidingNormal = frame.SlidingNormal,
-            CollidedObjects = frame.CollidedObjects,
-            Succeeded = frame.Succeeded,
-        };
-    }
+    public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result) =>
+        Build(default, step, result.Body.Velocity, result.Quanta, result.Move);
 
     /// <summary>Builds a frame from a target and the engine's result (copies the collided ids).</summary>
-    public static TrajectoryFrame From(Position target, in MoveResult result)
+    public static TrajectoryFrame From(Position target, in MoveResult result) => Build(target, null, default, 0, result);
+
+    private static TrajectoryFrame Build(Position target, SceneStep? step, Vector3 velocity, int quanta, in MoveResult result)
     {
         var next = result.Next;
         return new TrajectoryFrame
         {
             Target = target,
+            Step = step,
+            Velocity = velocity,
+            Quanta = quanta,
             Position = next.Position.Origin,
             Cell = next.Position.CellId,
             Contact = next.Contact,
