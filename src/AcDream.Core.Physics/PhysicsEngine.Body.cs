@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics;
 
 public sealed partial class PhysicsEngine
 {
-    private uint[] _stepCollided = new uint[8];
+    private readonly Transitions.IdList _stepCollided = new();
 
     /// <summary>
     /// Advances a body by <paramref name="elapsed"/> seconds the retail way (CPhysicsObj::update_object): the
@@ -60,7 +60,7 @@ public sealed partial class PhysicsEngine
         // Retail recomputes the acceleration whenever the contact state or the Gravity state changes.
         b.Acceleration = BodyMotion.Acceleration(ps, s.Contact, s.OnWalkable);
 
-        int collided = 0;
+        _stepCollided.Clear();
         var last = new QuantumOutcome();
         int quanta = 0;
         if ((ps & PhysicsState.Frozen) != 0)
@@ -82,7 +82,7 @@ public sealed partial class PhysicsEngine
         }
         if (pending <= PhysicsConstants.MaxQuantum)
         {
-            Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last, ref collided);
+            Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
             quanta = 1;
             pending = 0;
         }
@@ -90,21 +90,21 @@ public sealed partial class PhysicsEngine
         {
             do
             {
-                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, ref last, ref collided);
+                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, ref last);
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
             }
             while (pending > PhysicsConstants.MaxQuantum);
             if (pending > PhysicsConstants.MinQuantum)
             {
-                Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last, ref collided);
+                Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
                 quanta++;
                 pending = 0;
             }
         }
         b.PendingTime = pending;
         var move = new MoveResult(!last.Refused, s, last.Refused ? TransitionState.Collided : TransitionState.OK, last.CollisionNormalValid,
-            last.CollisionNormal, last.Environment, new ReadOnlyMemory<uint>(_stepCollided, 0, collided), last.LastCollided, last.VelocityKilled);
+            last.CollisionNormal, last.Environment, _stepCollided.Items, last.LastCollided, last.VelocityKilled);
         return new BodyStepResult(move, b, quanta, jumped);
     }
 
@@ -121,7 +121,7 @@ public sealed partial class PhysicsEngine
 
     /// <summary>One quantum: retail UpdateObjectInternal → UpdatePositionInternal → transition → SetPositionInternal.</summary>
     private void Quantum(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
-        ref QuantumOutcome outcome, ref int collided)
+        ref QuantumOutcome outcome)
     {
         var ps = mover.PhysicsState;
         var begin = s.Position;
@@ -155,7 +155,7 @@ public sealed partial class PhysicsEngine
         var result = ResolveCore(mover, seeded, new Position(begin.CellId, frame), b.StationaryFall);
         var span = result.CollidedObjects.Span;
         for (int i = 0; i < span.Length; i++)
-            AddStepCollided(span[i], ref collided);
+            _stepCollided.Add(span[i]);
         if (result.CollidedWithEnvironment) outcome.Environment = true;
         if (result.VelocityKilled) outcome.VelocityKilled = true;
         if (result.LastCollidedObject != 0) outcome.LastCollided = result.LastCollidedObject;
@@ -187,15 +187,5 @@ public sealed partial class PhysicsEngine
             result.CollisionNormalValid, result.CollisionNormal, _transition.CollisionInfo.FramesStationaryFall, b.StationaryFall);
         b.Velocity = v;
         s = next;
-    }
-
-    private void AddStepCollided(uint id, ref int count)
-    {
-        for (int i = 0; i < count; i++)
-            if (_stepCollided[i] == id)
-                return;
-        if (count == _stepCollided.Length)
-            Array.Resize(ref _stepCollided, count * 2);
-        _stepCollided[count++] = id;
     }
 }

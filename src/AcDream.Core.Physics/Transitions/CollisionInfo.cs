@@ -36,11 +36,10 @@ internal sealed class CollisionInfo
     /// <summary>Retail's adjust_offset field (kept for parity; unused by the resolution).</summary>
     public Vector3 AdjustOffset;
     /// <summary>The ids of the objects collided with, in order, without repeats.</summary>
-    public System.ReadOnlyMemory<uint> CollidedObjects => new(_collided, 0, _collidedCount);
-    // The engine hands this buffer out in its MoveResult (valid until its next call), so a move's list is
-    // never copied; a list that outgrows it moves to a larger one and leaves earlier results intact.
-    private uint[] _collided = new uint[8];
-    private int _collidedCount;
+    public System.ReadOnlyMemory<uint> CollidedObjects => _collided.Items;
+    // The engine hands this list out in its MoveResult (valid until its next call), so a move's list is
+    // never copied.
+    private readonly IdList _collided = new();
     /// <summary>The id of the last object whose test was not OK, or 0.</summary>
     public uint LastCollidedObject;
     /// <summary>The mover hit cell geometry or terrain.</summary>
@@ -70,7 +69,7 @@ internal sealed class CollisionInfo
         CollisionNormalValid = false;
         CollisionNormal = default;
         AdjustOffset = default;
-        _collidedCount = 0;
+        _collided.Clear();
         LastCollidedObject = 0;
         CollidedWithEnvironment = false;
         FramesStationaryFall = 0;
@@ -127,12 +126,8 @@ internal sealed class CollisionInfo
     /// <summary>Adds an object to the collided list once; a non-OK result makes it the last collided.</summary>
     public void AddObject(uint objectId, TransitionState state)
     {
-        for (int i = 0; i < _collidedCount; i++)
-            if (_collided[i] == objectId)
-                return;
-        if (_collidedCount == _collided.Length)
-            System.Array.Resize(ref _collided, _collided.Length * 2);
-        _collided[_collidedCount++] = objectId;
+        if (!_collided.Add(objectId))
+            return;
         if (state != TransitionState.OK)
             LastCollidedObject = objectId;
     }
