@@ -142,7 +142,7 @@ internal static class ParityReader
         var spheres = new Sphere[items.Count];
         for (int i = 0; i < items.Count; i++)
         {
-            var v = FloatArray(items[i].Value, items[i].Path, 4, "a sphere [x, y, z, r]");
+            var v = JsonRead.Numbers(items[i].Value, items[i].Path, 4, "a sphere [x, y, z, r]");
             spheres[i] = new Sphere(new Vector3(v[0], v[1], v[2]), v[3]);
         }
         float stepUp = p.Float("stepUp");
@@ -167,11 +167,7 @@ internal static class ParityReader
             return JsonRead.Flags<TEnum>(e, path);
         ulong bits = 0;
         foreach (string part in text.Split(['|', ','], StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries))
-        {
-            if (!Enum.TryParse<TEnum>(part, ignoreCase: false, out var flag) || !Enum.IsDefined(flag) || int.TryParse(part, out _))
-                throw new SceneFormatException(path, $"unknown {typeof(TEnum).Name} flag \"{part}\".");
-            bits |= Convert.ToUInt64(flag, System.Globalization.CultureInfo.InvariantCulture);
-        }
+            bits |= JsonRead.FlagBits<TEnum>(part, path);
         return (TEnum)Enum.ToObject(typeof(TEnum), bits);
     }
 
@@ -245,7 +241,7 @@ internal static class ParityReader
             uint planeCell = 0;
             if (contactPlane && contact)
             {
-                var cp = FloatArray(Req(f, at, "cp"), at + ".cp", 4, "a plane [nx, ny, nz, d]");
+                var cp = JsonRead.Numbers(Req(f, at, "cp"), at + ".cp", 4, "a plane [nx, ny, nz, d]");
                 plane = new Plane(cp[0], cp[1], cp[2], cp[3]);
                 planeCell = JsonRead.Id(Req(f, at, "cpCell"), at + ".cpCell");
                 hasPlane = true;
@@ -296,16 +292,5 @@ internal static class ParityReader
         for (int i = 0; i < ids.Length; i++)
             ids[i] = JsonRead.Id(items[i].Value, items[i].Path);
         return ids;
-    }
-
-    private static float[] FloatArray(JsonElement e, string path, int count, string what)
-    {
-        var items = JsonRead.Array(e, path);
-        if (items.Count != count)
-            throw new SceneFormatException(path, $"{what} needs {count} numbers, got {items.Count}.");
-        var values = new float[count];
-        for (int i = 0; i < count; i++)
-            values[i] = JsonRead.Float(items[i].Value, items[i].Path);
-        return values;
     }
 }

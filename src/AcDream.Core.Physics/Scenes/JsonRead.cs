@@ -173,7 +173,8 @@ internal static class JsonRead
         return list;
     }
 
-    private static float[] Numbers(JsonElement e, string path, int count, string what)
+    /// <summary>An array of exactly <paramref name="count"/> finite floats; <paramref name="what"/> names it in the error.</summary>
+    public static float[] Numbers(JsonElement e, string path, int count, string what)
     {
         var items = Array(e, path);
         if (items.Count != count)
@@ -245,10 +246,7 @@ internal static class JsonRead
             bits = 0;
             foreach (var (item, itemPath) in Array(e, path))
             {
-                string name = String(item, itemPath);
-                if (!Enum.TryParse<TEnum>(name, ignoreCase: false, out var flag) || !Enum.IsDefined(flag) || int.TryParse(name, out _))
-                    throw new SceneFormatException(itemPath, $"unknown {typeof(TEnum).Name} flag \"{name}\" (known: {string.Join(", ", Enum.GetNames<TEnum>())}).");
-                bits |= Convert.ToUInt64(flag, CultureInfo.InvariantCulture);
+                bits |= FlagBits<TEnum>(String(item, itemPath), itemPath);
             }
         }
         else
@@ -259,6 +257,14 @@ internal static class JsonRead
         if (bits > max)
             throw new SceneFormatException(path, $"0x{bits:X} does not fit {typeof(TEnum).Name}.");
         return (TEnum)Enum.ToObject(typeof(TEnum), bits);
+    }
+
+    /// <summary>The bits of one flag written by its name (a defined name, not a number); the error lists the known names.</summary>
+    public static ulong FlagBits<TEnum>(string name, string path) where TEnum : struct, Enum
+    {
+        if (!Enum.TryParse<TEnum>(name, ignoreCase: false, out var flag) || !Enum.IsDefined(flag) || int.TryParse(name, out _))
+            throw new SceneFormatException(path, $"unknown {typeof(TEnum).Name} flag \"{name}\" (known: {string.Join(", ", Enum.GetNames<TEnum>())}).");
+        return Convert.ToUInt64(flag, CultureInfo.InvariantCulture);
     }
 
     /// <summary>Formats a float so that it reads back to the same value.</summary>
