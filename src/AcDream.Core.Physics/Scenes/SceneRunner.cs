@@ -44,37 +44,19 @@ public static class SceneRunner
             var body = mover.StartBody;
             for (int f = 0; f < mover.FrameCount; f++)
             {
+                SceneStep? step = null;
+                var target = state.Position;
                 if (mover.IsBody)
-                {
-                    var step = mover.Steps[f];
-                    BodyStepResult stepped;
-                    try
-                    {
-                        stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
-                    }
-                    catch (ArgumentException ex)
-                    {
-                        throw Refused(mover, f, ex);
-                    }
-                    frames.Add(TrajectoryFrame.From(step, stepped));
-                    state = stepped.Next;
-                    body = stepped.Body;
-                }
+                    step = mover.Steps[f];
                 else
-                {
-                    var target = state.Position;
                     target.Frame.Origin += mover.Motion[f];
-                    MoveResult result;
-                    try
-                    {
-                        result = engine.Resolve(mover.Description, state, target);
-                    }
-                    catch (ArgumentException ex)
-                    {
-                        throw Refused(mover, f, ex);
-                    }
-                    frames.Add(TrajectoryFrame.From(target, result));
-                    state = result.Next;
+                try
+                {
+                    frames.Add(Advance(engine, mover.Description, step, target, ref state, ref body));
+                }
+                catch (ArgumentException ex)
+                {
+                    throw Refused(mover, f, ex);
                 }
                 if (log is not null)
                 {
@@ -85,6 +67,26 @@ public static class SceneRunner
             movers.Add(new MoverTrajectory(mover.Name, frames));
         }
         return new Trajectory(scene.Name, scene.Sha256, LibraryVersion, movers);
+    }
+
+    /// <summary>
+    /// One frame of a mover: a body step when <paramref name="step"/> is given, else a move to
+    /// <paramref name="target"/>. Advances <paramref name="state"/> (and <paramref name="body"/>) only when the
+    /// engine accepts the input; its <see cref="ArgumentException"/> otherwise passes through.
+    /// </summary>
+    internal static TrajectoryFrame Advance(PhysicsEngine engine, MoverDescription description, SceneStep? step, in Position target,
+        ref MoverState state, ref BodyState body)
+    {
+        if (step is { } s)
+        {
+            var stepped = engine.Step(description, state, body, s.Elapsed, s.DesiredVelocity, s.JumpVelocity);
+            state = stepped.Next;
+            body = stepped.Body;
+            return TrajectoryFrame.From(s, stepped);
+        }
+        var result = engine.Resolve(description, state, target);
+        state = result.Next;
+        return TrajectoryFrame.From(target, result);
     }
 
     /// <summary>

@@ -112,22 +112,9 @@ public static class TrajectoryReplay
                     return Fail(new ReplayDifference(mover.Name, f, "step", mover.IsBody ? "a body step" : "a target",
                         expected.Step.HasValue ? "a body step" : "a target"), compared, tolerance, notes);
                 TrajectoryFrame actual;
-                MoverState next;
                 try
                 {
-                    if (expected.Step is { } step)
-                    {
-                        var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
-                        actual = TrajectoryFrame.From(step, stepped);
-                        next = stepped.Next;
-                        body = stepped.Body;
-                    }
-                    else
-                    {
-                        var result = engine.Resolve(mover.Description, state, expected.Target);
-                        actual = TrajectoryFrame.From(expected.Target, result);
-                        next = result.Next;
-                    }
+                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body);
                 }
                 catch (ArgumentException ex)
                 {
@@ -142,7 +129,6 @@ public static class TrajectoryReplay
                 if (difference is not null)
                     return Fail(difference, compared, tolerance, notes);
                 compared++;
-                state = next;
             }
         }
         return new ReplayResult(null, compared, tolerance, notes);
