@@ -64,9 +64,36 @@ public sealed class MoverDescription
     /// step-down 1.5 (<see cref="PlayerStepDownHeight"/>), gravity, edge slide, a player. The seed's door
     /// tests used a step-down of 0.04; pass it as <paramref name="stepDownHeight"/> to reproduce them.
     /// </summary>
+    /// <remarks>
+    /// <see cref="PhysicsState.EdgeSlide"/> (retail's player state word 0x00400408 carries EDGE_SLIDE_PS) means
+    /// a mover on walkable ground does not walk off a drop deeper than its step-down height: at such an edge
+    /// it slides along it or stops there (CTransition::edge_slide), in <see cref="PhysicsEngine.Resolve"/> and
+    /// <see cref="PhysicsEngine.Step"/> alike. A drop within the step-down is stepped down; a mover in the air
+    /// (a jump) is not held. For a mover that walks or runs off such an edge and falls, drop the flag:
+    /// <c>MoverDescription.Player().With(physicsState: PhysicsState.Gravity)</c> (see <see cref="With"/>).
+    /// </remarks>
     public static MoverDescription Player(uint objectId = 0x50000001, float stepDownHeight = PlayerStepDownHeight, ObjectInfoState extraFlags = ObjectInfoState.None) =>
         new(objectId, [new Sphere(new Vector3(0, 0, 0.475f), 0.48f), new Sphere(new Vector3(0, 0, 1.35f), 0.48f)],
             0.6f, stepDownHeight, PhysicsState.Gravity | PhysicsState.EdgeSlide, ObjectInfoState.IsPlayer | extraFlags);
+
+    /// <summary>
+    /// A copy of this description with the given fields replaced and every other field, the spheres too, kept:
+    /// the <c>with</c> of a record, for this immutable class. The copy is checked like a new description
+    /// (the same exceptions as the constructor); this one is not changed. For example the retail player
+    /// without <see cref="PhysicsState.EdgeSlide"/>, which walks off a drop deeper than its step-down instead
+    /// of stopping at it: <c>MoverDescription.Player().With(physicsState: PhysicsState.Gravity)</c>.
+    /// </summary>
+    /// <param name="objectId">The new <see cref="ObjectId"/>, or null to keep it.</param>
+    /// <param name="stepUpHeight">The new <see cref="StepUpHeight"/>, or null to keep it.</param>
+    /// <param name="stepDownHeight">The new <see cref="StepDownHeight"/>, or null to keep it.</param>
+    /// <param name="physicsState">The new <see cref="PhysicsState"/> (all the bits), or null to keep it.</param>
+    /// <param name="flags">The new <see cref="Flags"/> (all the bits), or null to keep them.</param>
+    /// <param name="scale">The new <see cref="Scale"/>, or null to keep it.</param>
+    /// <param name="targetId">The new <see cref="TargetId"/>, or null to keep it.</param>
+    public MoverDescription With(uint? objectId = null, float? stepUpHeight = null, float? stepDownHeight = null,
+        PhysicsState? physicsState = null, ObjectInfoState? flags = null, float? scale = null, uint? targetId = null) =>
+        new(objectId ?? ObjectId, _spheres, stepUpHeight ?? StepUpHeight, stepDownHeight ?? StepDownHeight,
+            physicsState ?? PhysicsState, flags ?? Flags, scale ?? Scale, targetId ?? TargetId);
 
     /// <summary>The mover's id.</summary>
     public uint ObjectId { get; }

@@ -17,8 +17,12 @@ public sealed partial class PhysicsEngine
     /// stands on walkable ground) plus its velocity and acceleration (gravity when not standing on walkable
     /// ground; friction on it), through the same transition as <see cref="Resolve"/>; the outcome lands or
     /// lifts the body, reflects its velocity off what it hit by its elasticity, or zeroes it.
+    /// A mover with <see cref="PhysicsState.EdgeSlide"/> (the retail player, <see cref="MoverDescription.Player"/>)
+    /// standing on walkable ground does not run off a drop deeper than its step-down height: it slides along
+    /// the edge or stops at it, as in <see cref="Resolve"/>; without the flag it leaves the ground there and
+    /// falls (<see cref="MoverDescription.With"/> makes the copy without it).
     /// </summary>
-    /// <param name="mover">What the mover is (its PhysicsState decides Gravity, Sledding, Inelastic, Hidden, Frozen).</param>
+    /// <param name="mover">What the mover is (its PhysicsState decides Gravity, EdgeSlide, Sledding, Inelastic, Hidden, Frozen).</param>
     /// <param name="state">Where it is and how it stands.</param>
     /// <param name="body">Its velocity, spin, friction, elasticity and carried time.</param>
     /// <param name="elapsed">Seconds since the last call, zero or more.</param>

@@ -53,6 +53,10 @@ public sealed partial class PhysicsEngine
     /// vector, unknown cells (the state's cell, the target's cell label and a non-zero contact-plane cell
     /// must all be in the world), and a state whose origin lies more than
     /// <see cref="InputLimits.MaxDistanceFromCell"/> plus the mover's reach outside its cell.
+    /// A grounded mover with <see cref="PhysicsState.EdgeSlide"/> (the retail player, <see cref="MoverDescription.Player"/>)
+    /// is not moved over a drop deeper than its step-down height: it slides along the edge or stops at it
+    /// (retail CTransition::edge_slide); without the flag it is moved out over the drop, out of contact
+    /// (<see cref="MoverDescription.With"/> makes the copy without it).
     /// A motion cut into more than <see cref="PhysicsConstants.MaxSubSteps"/> sub-steps (kilometres in one
     /// frame) is not an error: as in retail it is refused at once, with <see cref="MoveResult.Succeeded"/>
     /// false and <see cref="MoveResult.Next"/> equal to <paramref name="state"/>.

@@ -92,6 +92,29 @@ public class StepAndEdgeTests
     }
 
     /// <summary>
+    /// The retail player's EdgeSlide holds it at a drop deeper than its step-down (2 m against 1.5 m): walking
+    /// north off a 2 m platform it stops at the far edge (y = 106) and stays on the top face, in contact. Its
+    /// copy without the flag (<see cref="MoverDescription.With"/>) walks on over the drop: no ground within
+    /// 1.5 m below, so it ends beyond the edge, out of contact, still at the platform's height (a
+    /// <c>Resolve</c> has no gravity; a body would fall).
+    /// </summary>
+    [Fact]
+    public void TheRetailPlayer_StopsAtADeepDrop_ItsCopyWithoutEdgeSlide_WalksOff()
+    {
+        var start = MoverState.OnFloor(TestGeometry.At(100, 104, 2f), 2f);
+        var held = new Mover(Platform(2f), MoverDescription.Player(), start);
+        var walker = new Mover(Platform(2f), MoverDescription.Player().With(physicsState: PhysicsState.Gravity), start);
+        held.Walk(new Vector3(0, 0.1f, 0), 40);
+        walker.Walk(new Vector3(0, 0.1f, 0), 40);
+
+        Assert.InRange(held.Origin.Y, 105.9f, 106.5f);
+        Assert.InRange(held.Origin.Z, 2f, 2.01f);
+        Assert.True(held.State.Contact && held.State.OnWalkable, "the retail player stays on the platform");
+        Assert.True(walker.Origin.Y > 107.5f, $"without EdgeSlide the player walks on over the drop, y = {walker.Origin.Y}");
+        Assert.False(walker.State.Contact, "past the edge there is no ground within the step-down height");
+    }
+
+    /// <summary>
     /// Walking diagonally off the platform's far edge with EdgeSlide: retail restores the check position and
     /// then slides along the precipice (CTransition::edge_slide), so the mover keeps moving along the edge
     /// every frame and never drops off.
