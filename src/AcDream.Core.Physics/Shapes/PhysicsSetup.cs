@@ -42,9 +42,21 @@ public sealed class PhysicsSetup
     public IReadOnlyList<CylSphere> CylSpheres { get; init; } = Array.Empty<CylSphere>();
     /// <summary>The collision spheres.</summary>
     public IReadOnlyList<Sphere> Spheres { get; init; } = Array.Empty<Sphere>();
-    /// <summary>The object's height.</summary>
+    /// <summary>
+    /// The Setup's height, metres, unscaled (DAT Setup <c>Height</c>). Not used for collision: no transition,
+    /// query or registry code reads it; <see cref="Validate"/> only checks it (finite, in
+    /// [0, <see cref="InputLimits.MaxExtent"/>]). Objects collide by their parts' BSPs, cylspheres and
+    /// spheres. Retail reads it, times the object's Z scale (CPartArray::GetHeight), outside collision: for
+    /// distances between objects in movement (MoveToManager's cylinder distance), sticking to a target and
+    /// combat's attack height. Kept so a setup carries what the Setup does; 0 when unknown.
+    /// </summary>
     public float Height { get; init; }
-    /// <summary>The object's radius.</summary>
+    /// <summary>
+    /// The Setup's radius, metres, unscaled (DAT Setup <c>Radius</c>). Not used for collision, like
+    /// <see cref="Height"/>: only <see cref="Validate"/> reads it. Retail scales it by the object's Z scale
+    /// (CPartArray::GetRadius) for movement distances, sticking and combat, never in a transition; the
+    /// collision extent of an object comes from its shapes' bounding spheres. 0 when unknown.
+    /// </summary>
     public float Radius { get; init; }
     /// <summary>How high a mover with this setup may step up.</summary>
     public float StepUpHeight { get; init; }
