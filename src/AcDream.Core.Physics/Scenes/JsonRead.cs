@@ -10,7 +10,9 @@ namespace AcDream.Core.Physics.Scenes;
 /// <summary>
 /// A JSON object being read strictly: every field asked for is remembered, and <see cref="End"/> refuses
 /// any field that was never asked for (typos are errors). Duplicate fields are refused on creation.
-/// Load-time only; allocates freely.
+/// A misspelt field is reported as unknown before the missing-field error it causes: when a required field
+/// is absent (<see cref="Req"/>, <see cref="Missing"/>), a field not read yet whose name is one edit from
+/// it is refused first, with a did-you-mean. Load-time only; allocates freely.
 /// </summary>
 internal sealed class JsonObj
 {
@@ -45,8 +47,22 @@ internal sealed class JsonObj
     /// <summary>True when the field is present and not null.</summary>
     public bool Has(string name) => Opt(name).HasValue;
 
-    /// <summary>The field; throws naming it when absent.</summary>
-    public JsonElement Req(string name) => Opt(name) ?? throw new SceneFormatException(Child(name), "is required.");
+    /// <summary>The field; throws naming it when absent (or naming the misspelt field that was meant).</summary>
+    public JsonElement Req(string name) => Opt(name) ?? throw Missing(Child(name), "is required.", name);
+
+    /// <summary>
+    /// The error for a missing field, <paramref name="message"/> at <paramref name="path"/>; but when a field of
+    /// this object not read yet is one edit away from one of <paramref name="meant"/> (or differs only in case),
+    /// it is refused as unknown instead, with a did-you-mean: the typo is the mistake to fix. One edit only,
+    /// because the fields not read yet may include real fields whose names are near the missing one.
+    /// </summary>
+    public SceneFormatException Missing(string path, string message, params string[] meant)
+    {
+        foreach (var p in _element.EnumerateObject())
+            if (!_known.Contains(p.Name) && FieldNames.Closest(p.Name, meant, maxEdits: 1) is { } name)
+                return new SceneFormatException(Child(p.Name), $"unknown field \"{p.Name}\"; did you mean \"{name}\"?");
+        return new SceneFormatException(path, message);
+    }
 
     /// <summary>The fields in file order (all count as known).</summary>
     public IEnumerable<(string Name, JsonElement Value)> Fields()
@@ -66,7 +82,8 @@ internal sealed class JsonObj
             {
                 var known = new List<string>(_known);
                 known.Sort(StringComparer.Ordinal);
-                throw new SceneFormatException(Child(p.Name), $"unknown field (expected one of: {string.Join(", ", known)}).");
+                string hint = FieldNames.Closest(p.Name, known, maxEdits: 2) is { } meant ? $"did you mean \"{meant}\"? " : "";
+                throw new SceneFormatException(Child(p.Name), $"unknown field \"{p.Name}\" ({hint}expected one of: {string.Join(", ", known)}).");
             }
     }
 

@@ -400,7 +400,7 @@ public static class SceneLoader
             else
             {
                 if (_landblocks.Count != 1)
-                    throw new SceneFormatException(o.Child("cell"), "is required when the scene has more than one landblock.");
+                    throw o.Missing(o.Child("cell"), "is required when the scene has more than one landblock.", "cell");
                 cell = LandDefs.LandCellAt(_landblocks[0], origin);
                 if (cell == 0)
                     throw new SceneFormatException(o.Child("position"), $"{origin} is outside landblock 0x{_landblocks[0]:X4} (0..192 m on X and Y).");
@@ -440,7 +440,7 @@ public static class SceneLoader
             string name = o.String("name");
             uint id = o.Opt("id") is { } idValue ? JsonRead.Id(idValue, o.Child("id")) : 0x5000_0001;
             if (o.Has("setup") == o.Has("spheres"))
-                throw new SceneFormatException(path, "a mover needs exactly one of \"setup\" (its spheres and step heights) or \"spheres\".");
+                throw o.Missing(path, "a mover needs exactly one of \"setup\" (its spheres and step heights) or \"spheres\".", "setup", "spheres");
             Sphere[] spheres;
             float stepUp, stepDown;
             if (o.Opt("setup") is { } s)
@@ -504,7 +504,7 @@ public static class SceneLoader
         {
             bool floor = o.Has("floorZ"), airborne = o.Bool("airborne", false), full = o.Has("start");
             if ((floor ? 1 : 0) + (airborne ? 1 : 0) + (full ? 1 : 0) != 1)
-                throw new SceneFormatException(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height), \"airborne\": true, or \"start\" (a full start state).");
+                throw o.Missing(path, "a mover needs exactly one of \"floorZ\" (standing on a floor at that height), \"airborne\": true, or \"start\" (a full start state).", "floorZ", "airborne", "start");
             if (full)
             {
                 foreach (string placement in new[] { "position", "cell", "rotation" })

@@ -54,7 +54,7 @@ internal static class StartStateReader
         else
         {
             if (contact)
-                throw new SceneFormatException(o.Child("contactPlane"), "is required when \"contact\" is set.");
+                throw o.Missing(o.Child("contactPlane"), "is required when \"contact\" is set.", "contactPlane");
             if (o.Has("contactPlaneCell") && !noPlane)
                 throw new SceneFormatException(o.Child("contactPlaneCell"), "needs a \"contactPlane\".");
             if (water)

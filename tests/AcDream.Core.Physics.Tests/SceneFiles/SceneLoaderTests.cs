@@ -79,6 +79,53 @@ public class SceneLoaderTests
         AssertPath(Refused(doc), "objects[0].rotaton", "unknown field");
     }
 
+    /// <summary>
+    /// The typo rule: a misspelt field is reported as unknown, at its own path, before the missing-field
+    /// error it causes ("position" is required, and the mover has "postion").
+    /// </summary>
+    [Fact]
+    public void MisspeltRequiredField_IsReportedAsUnknown_BeforeTheMissingField()
+    {
+        var doc = Doc();
+        var mover = doc["movers"]![0]!.AsObject();
+        mover["postion"] = mover["position"]!.DeepClone();
+        mover.Remove("position");
+        var ex = Refused(doc);
+        Assert.Equal("movers[0].postion: unknown field \"postion\"; did you mean \"position\"?", ex.Message);
+        Assert.Equal("movers[0].postion", ex.JsonPath);
+    }
+
+    [Theory]
+    [InlineData("setup", "setpu", "setup")]        // two letters swapped, in "exactly one of setup or spheres"
+    [InlineData("floorZ", "floorz", "floorZ")]     // the case, in "exactly one of floorZ, airborne or start"
+    [InlineData("name", "nme", "name")]            // a letter left out of a short name
+    public void MisspeltField_NamesTheFieldMeant(string field, string typo, string meant)
+    {
+        var doc = Doc();
+        var mover = doc["movers"]![0]!.AsObject();
+        mover[typo] = mover[field]!.DeepClone();
+        mover.Remove(field);
+        AssertPath(Refused(doc), $"movers[0].{typo}", $"unknown field \"{typo}\"; did you mean \"{meant}\"?");
+    }
+
+    [Fact]
+    public void MisspeltOptionalField_IsUnknown_WithADidYouMean()
+    {
+        var doc = Doc();
+        doc["objects"]![0]!["rotaton"] = new JsonArray(1, 0, 0, 0);
+        AssertPath(Refused(doc), "objects[0].rotaton", "unknown field \"rotaton\" (did you mean \"rotation\"? expected one of:");
+    }
+
+    [Fact]
+    public void AMissingField_WithAnUnrelatedUnknownField_IsStillRequired()
+    {
+        var doc = Doc();
+        var mover = doc["movers"]![0]!.AsObject();
+        mover.Remove("position");
+        mover["colour"] = "red";
+        AssertPath(Refused(doc), "movers[0].position", "is required");
+    }
+
     [Fact]
     public void UnknownTopLevelField_IsATypo()
     {
