@@ -17,6 +17,9 @@ namespace AcDream.Core.Physics.Tool;
 /// </summary>
 internal static class PlotCommand
 {
+    /// <summary>How close (top view, metres) another mover's number may be to a path's end before the start is tried.</summary>
+    private const float LabelGap = 0.75f;
+
     /// <summary>The drawn length of a collision normal, metres.</summary>
     private const double NormalLength = 0.5;
 
@@ -45,6 +48,7 @@ internal static class PlotCommand
         var side = multiplot.GetPlot(1);
         DrawWorld(scene.World, frameCell, min, max, top, side, alongX);
         int[] counts = DrawPaths(paths, top, side, alongX);
+        var names = LabelPaths(paths, top, side, alongX);
 
         top.Title($"{scene.Name}: top view");
         top.XLabel("x (m)");
@@ -60,8 +64,11 @@ internal static class PlotCommand
         top.Axes.SetLimits(min.X, max.X, min.Y, max.Y);
         side.Axes.SetLimits(alongX ? min.X : min.Y, alongX ? max.X : max.Y, min.Z, max.Z);
         top.ShowLegend();
+        side.ShowLegend();
         multiplot.SavePng(outPath, 1600, 800);
-        stdout.WriteLine($"{scene.Name}: {paths.Count} movers, {counts.Sum()} frames ({Describe(counts)}); plot written to {outPath}");
+        stdout.WriteLine($"{scene.Name}: {Program.Count(paths.Count, "mover")}, {Program.Count(counts.Sum(), "frame")} ({Describe(counts)}); plot written to {outPath}");
+        foreach (string name in names)
+            stdout.WriteLine(Program.Printable($"  {name}"));
         return 0;
     }
 
@@ -239,6 +246,52 @@ internal static class PlotCommand
         var normalKey = top.Add.Markers(Array.Empty<double>(), Array.Empty<double>(), MarkerShape.FilledTriangleUp, 6, NormalColor);
         normalKey.LegendText = "collision normal (where it changed)";
         return counts;
+    }
+
+    /// <summary>
+    /// Names the movers: each path is numbered in both views at its end, or at its start when another
+    /// number is within <see cref="LabelGap"/> of the end and the start is clearer (movers often share a
+    /// start, or end against the same wall), and the side view's legend lists each number with its mover's name.
+    /// Returns those legend lines ("1: north"), which the command prints too.
+    /// </summary>
+    private static List<string> LabelPaths(List<MoverPath> paths, Plot top, Plot side, bool alongX)
+    {
+        var names = new List<string>(paths.Count);
+        var placed = new List<Vector2>();
+        for (int i = 0; i < paths.Count; i++)
+        {
+            var p = paths[i];
+            var end = p.Points.Length > 0 ? p.Points[^1] : p.Start;
+            float endClear = Clearance(end, placed);
+            var at = endClear >= LabelGap || endClear >= Clearance(p.Start, placed) ? end : p.Start;
+            placed.Add(new Vector2(at.X, at.Y));
+            string number = (i + 1).ToString(System.Globalization.CultureInfo.InvariantCulture);
+            Label(top.Add.Text(number, at.X, at.Y));
+            Label(side.Add.Text(number, alongX ? at.X : at.Y, at.Z));
+            names.Add($"{number}: {p.Name}");
+            side.Legend.ManualItems.Add(new LegendItem { LabelText = names[^1] });
+        }
+        return names;
+    }
+
+    /// <summary>How far a point is from the nearest of the labels placed so far, in the top view.</summary>
+    private static float Clearance(Vector3 point, List<Vector2> placed)
+    {
+        float nearest = float.MaxValue;
+        foreach (var q in placed)
+            nearest = MathF.Min(nearest, Vector2.Distance(q, new Vector2(point.X, point.Y)));
+        return nearest;
+    }
+
+    private static void Label(ScottPlot.Plottables.Text text)
+    {
+        text.LabelFontSize = 13;
+        text.LabelBold = true;
+        text.LabelFontColor = Colors.Black;
+        text.LabelBackgroundColor = Colors.White.WithAlpha(0.8);
+        text.LabelAlignment = Alignment.LowerLeft;
+        text.OffsetX = 4;
+        text.OffsetY = -4;
     }
 
     private static void Arrow(ScottPlot.Plottables.Arrow arrow)

@@ -270,10 +270,10 @@ public static class Program
             stdout.WriteLine(Printable($"note: {note}"));
         if (result.Matches)
         {
-            stdout.WriteLine(Printable($"{scene.Name}: replay matches ({result.FramesCompared} frames, {trajectory.Movers.Count} movers, tolerance {F(result.Tolerance)} m)"));
+            stdout.WriteLine(Printable($"{scene.Name}: replay matches ({Count(result.FramesCompared, "frame")}, {Count(trajectory.Movers.Count, "mover")}, tolerance {F(result.Tolerance)} m)"));
             return 0;
         }
-        stdout.WriteLine(Printable($"{scene.Name}: replay differs after {result.FramesCompared} matching frames"));
+        stdout.WriteLine(Printable($"{scene.Name}: replay differs after {Count(result.FramesCompared, "matching frame")}"));
         stdout.WriteLine(Printable($"  {result.FirstDifference}"));
         return 1;
     }
@@ -289,6 +289,9 @@ public static class Program
             throw new SceneFormatException(string.Empty, $"{path}: {ex.Message}", ex);
         }
     }
+
+    /// <summary>"1 mover", "2 movers": a count with its noun in the singular or the plural.</summary>
+    internal static string Count(long n, string one) => $"{n} {one}{(n == 1 ? "" : "s")}";
 
     private static string F(float v) => v.ToString("0.#####", CultureInfo.InvariantCulture);
     private static string V(Vector3 v) => $"{v.X,10:F4} {v.Y,10:F4} {v.Z,8:F4}";
@@ -322,12 +325,12 @@ public static class Program
                 if (!fr.Succeeded) refused++;
                 if (!fr.Contact) airborne++;
             }
-        return $"{scene.Name}: {t.Movers.Count} movers, {frames} frames, {blocked} with a collision, {airborne} airborne, {refused} refused";
+        return $"{scene.Name}: {Count(t.Movers.Count, "mover")}, {Count(frames, "frame")}, {blocked} with a collision, {airborne} airborne, {refused} refused";
     }
 
     private static void PrintDiagnostics(TextWriter w, FrameDiagnostics d)
     {
-        w.WriteLine($"# {Printable(d.MoverName)} frame {d.Frame}: {d.Events.Count} events");
+        w.WriteLine($"# {Printable(d.MoverName)} frame {d.Frame}: {Count(d.Events.Count, "event")}");
         foreach (var e in d.Events)
         {
             string text = e.Kind switch

@@ -56,7 +56,7 @@ internal static class QueryCommand
                 var list = new string[n];
                 for (int i = 0; i < n; i++)
                     list[i] = $"0x{found[i].ObjectId:X8} {found[i].Kind}[{found[i].ShapeIndex}]";
-                stdout.WriteLine(n == 0 ? "near none" : $"near {n} object{(n == 1 ? "" : "s")}: {string.Join(", ", list)}");
+                stdout.WriteLine(n == 0 ? "near none" : $"near {Program.Count(n, "object")}: {string.Join(", ", list)}");
                 return 0;
             }
             case "cast":

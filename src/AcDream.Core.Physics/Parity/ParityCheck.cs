@@ -66,7 +66,7 @@ public static class ParityCheck
                     if (ms >= 3000 && ms - lastReport >= 3000 && done < total)
                     {
                         lastReport = ms;
-                        stderr.WriteLine($"{name}: {done} of {total} runs ({ms / 1000} s)");
+                        stderr.WriteLine($"{name}: {done} of {ParityReport.Count(total, "run")} ({ms / 1000} s)");
                     }
                 });
                 stdout.WriteLine(report.ToString());

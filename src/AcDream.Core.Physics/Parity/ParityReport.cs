@@ -50,9 +50,13 @@ public sealed class ParityReport
         double percent = Frames == 0 ? 0 : 100.0 * WithinTolerance / Frames;
         string need = RequireBitIdentical ? "bit-identical" : $"within {ParityCheck.Tolerance.ToString("0e0", c)} m";
         string line = string.Format(c,
-            "{0}: {1} ({2}) {3} runs, {4} frames, {5:0.00} % within {6} m, {7} bit-identical, max difference {8} m, {9} flag mismatches",
-            File, Passed ? "ok" : "FAIL", need, Runs, Frames, percent, ParityCheck.Tolerance.ToString("0e0", c), BitIdentical,
-            MaxDifference == 0 ? "0" : MaxDifference.ToString("0.###e0", c), FlagMismatches);
+            "{0}: {1} ({2}) {3}, {4}, {5:0.00} % within {6} m, {7} bit-identical, max difference {8} m, {9}",
+            File, Passed ? "ok" : "FAIL", need, Count(Runs, "run"), Count(Frames, "frame"), percent, ParityCheck.Tolerance.ToString("0e0", c), BitIdentical,
+            MaxDifference == 0 ? "0" : MaxDifference.ToString("0.###e0", c), Count(FlagMismatches, "flag mismatch", "flag mismatches"));
         return Passed ? line : $"{line}; first: {FirstFailure}";
     }
+
+    /// <summary>"1 run", "2 runs": a count with its noun in the singular or the plural.</summary>
+    internal static string Count(long n, string one, string? many = null) =>
+        string.Create(CultureInfo.InvariantCulture, $"{n} {(n == 1 ? one : many ?? one + "s")}");
 }

@@ -78,7 +78,7 @@ public sealed class ParityCheckTests : IDisposable
         Assert.Equal(4, report.Frames);
         Assert.Equal(4, report.BitIdentical);
         Assert.Equal(0, report.MaxDifference);
-        Assert.Equal("door.json.gz: ok (bit-identical) 1 runs, 4 frames, 100.00 % within 1e-4 m, 4 bit-identical, max difference 0 m, 0 flag mismatches", report.ToString());
+        Assert.Equal("door.json.gz: ok (bit-identical) 1 run, 4 frames, 100.00 % within 1e-4 m, 4 bit-identical, max difference 0 m, 0 flag mismatches", report.ToString());
     }
 
     [Fact]

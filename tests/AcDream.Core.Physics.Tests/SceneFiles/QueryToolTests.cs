@@ -63,6 +63,9 @@ public class QueryToolTests
             // Five treads and the cellar floor: six steps down for one climber, six up for the other.
             Assert.Contains("12 stepped", output);
             Assert.Contains("0 airborne", output);
+            // The movers are numbered on the plot and named in its legend, which is printed too, in scene order.
+            Assert.EndsWith("\n  1: climber-down-the-stair\n  2: climber-up-the-stair\n  3: player-at-the-top-step\n" +
+                "  4: climber-diagonal-into-the-stairwell", output.Replace("\r\n", "\n"));
             var bytes = File.ReadAllBytes(png);
             Assert.True(bytes.Length > 10_000, $"the PNG has only {bytes.Length} bytes");
             Assert.Equal(new byte[] { 0x89, (byte)'P', (byte)'N', (byte)'G' }, bytes[..4]);

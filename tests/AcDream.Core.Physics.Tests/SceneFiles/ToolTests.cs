@@ -76,6 +76,57 @@ public class ToolTests
         }
     }
 
+    private const string OneMoverScene = """
+        {
+          "version": 1, "name": "one",
+          "setups": { "player": { "spheres": [{ "center": [0, 0, 0.475], "radius": 0.48 }], "stepUpHeight": 0.6, "stepDownHeight": 0.04 } },
+          "landblocks": [{ "id": "0xA9B4", "height": 0 }],
+          "movers": [{ "name": "m", "setup": "player", "position": [100, 98, 0], "floorZ": 0, "motion": [[0, 0.1, 0]] }]
+        }
+        """;
+
+    /// <summary>Counts of one read in the singular: "1 mover, 1 frame", not "1 movers, 1 frames".</summary>
+    [Fact]
+    public void OneMoverOneFrame_IsCountedInTheSingular()
+    {
+        string scene = Temp("one.json");
+        string traj = Temp("one.trajectory.json");
+        try
+        {
+            File.WriteAllText(scene, OneMoverScene);
+            var (code, output, _) = Run("record", scene, "--out", traj);
+            Assert.Equal(0, code);
+            Assert.StartsWith("one: 1 mover, 1 frame, 0 with a collision, 0 airborne, 0 refused; trajectory written", output);
+            (code, output, _) = Run("replay", scene, traj);
+            Assert.Equal(0, code);
+            Assert.StartsWith("one: replay matches (1 frame, 1 mover, tolerance", output);
+        }
+        finally
+        {
+            File.Delete(scene);
+            File.Delete(traj);
+        }
+    }
+
+    /// <summary>The typo rule through the tool: one line naming the file, the misspelt field's path and the field meant.</summary>
+    [Fact]
+    public void AMisspeltField_ExitsTwo_NamingTheTypo()
+    {
+        string scene = Temp("typo.json");
+        try
+        {
+            File.WriteAllText(scene, OneMoverScene.Replace("\"position\"", "\"postion\""));
+            var (code, output, err) = Run("run", scene);
+            Assert.Equal(2, code);
+            Assert.Equal("", output);
+            Assert.EndsWith($"{scene}: movers[0].postion: unknown field \"postion\"; did you mean \"position\"?", err.TrimEnd());
+        }
+        finally
+        {
+            File.Delete(scene);
+        }
+    }
+
     [Fact]
     public void Diag_PrintsTheEvents()
     {
