@@ -112,8 +112,10 @@ public static class DoorJob
             "# Door benchmark\n\n" + $"Machine: {Reports.Machine()}.\n\n" +
             $"Timing: {(full ? "BenchmarkDotNet for the door transition, Stopwatch for the rest" : "Stopwatch loops after a warm-up (fastest of 60 samples)")}. " +
             $"Accuracy: {approaches.Length} approaches per method, {results[0].Accuracy.Frames} frames for Retail.\n\n" +
+            Reports.MethodsAndReference() + Reports.ColumnDefinitions() + Reports.FailureDefinitions() + "## Results\n\n" +
             Reports.SpeedAccuracyTable(results) + "\n" + Reports.ScaleTable(scale) + "\n![speed vs accuracy](door-speed-accuracy.png)\n");
-        File.WriteAllText(Path.Combine(outDir, "stability.md"), "# Door stability map\n\n" + Reports.StabilityTables(results) + "\n![stability map](stability-map.png)\n");
+        File.WriteAllText(Path.Combine(outDir, "stability.md"), "# Door stability map\n\n" + Reports.MethodsAndReference() +
+            Reports.FailureDefinitions() + "## Results\n\n" + Reports.StabilityTables(results) + "\n![stability map](stability-map.png)\n");
         Charts.SpeedVsAccuracy(results, Path.Combine(outDir, "door-speed-accuracy.png"));
         Charts.StabilityMap(results, Path.Combine(outDir, "stability-map.png"));
         Console.WriteLine();

@@ -10,8 +10,9 @@ namespace AcDream.Core.Physics.Bench.Reporting;
 public static class Charts
 {
     /// <summary>
-    /// Speed (ns per transition, log scale) against accuracy: one panel for the position error (mean and
-    /// p99 per frame against the reference), one for the deepest penetration; one labelled point per method.
+    /// Speed (the approach mix's ns per frame, log scale) against accuracy: one panel for the position error
+    /// (mean and p99 per frame against the reference), one for the deepest penetration; one labelled point
+    /// per method. The x axis is in ns throughout (ticks too); the y axes start at 0, as errors and depths do.
     /// </summary>
     public static void SpeedVsAccuracy(IReadOnlyList<MethodResult> results, string path)
     {
@@ -43,39 +44,47 @@ public static class Charts
         epsLabel.LabelAlignment = Alignment.LowerLeft;
         foreach (var plot in new[] { error, penetration })
         {
-            plot.XLabel("ns per transition (log scale, approach mix)");
-            LogTicks(plot, results.Select(r => r.Timing.MixNs));
-            plot.Axes.AutoScale();
+            plot.XLabel("approach mix: ns per frame (log scale; door.csv mix_ns_per_frame)");
             var logs = results.Select(r => Math.Log10(Math.Max(1, r.Timing.MixNs))).ToArray();
-            plot.Axes.SetLimitsX(logs.Min() - 0.08, logs.Max() + 0.22);
+            double left = logs.Min() - 0.08, right = logs.Max() + 0.22;
+            LogTicks(plot, left, right);
+            plot.Axes.AutoScale();
+            plot.Axes.SetLimitsX(left, right);
+            // Errors and depths are never negative: the axis starts at 0 (auto-scaling pads below it).
+            plot.Axes.SetLimitsY(0, plot.Axes.GetLimits().Top);
         }
         multiplot.SavePng(path, 1600, 650);
     }
 
-    /// <summary>A method's label beside its point, staggered up and down so that neighbours stay readable.</summary>
+    /// <summary>
+    /// A method's label beside its point, staggered up and down so that neighbours stay readable; always
+    /// above a point at 0, which sits on the bottom of the axis (a label below it would be cut off).
+    /// </summary>
     private static void Label(Plot plot, string text, double x, double y, Color color, int index)
     {
         var label = plot.Add.Text(text, x, y);
         label.LabelFontColor = color;
         label.LabelFontSize = 13;
         label.OffsetX = 8;
-        label.OffsetY = index % 2 == 0 ? -18 : 4;
+        label.OffsetY = index % 2 == 0 || y <= 0 ? -18 : 4;
     }
 
-    private static void LogTicks(Plot plot, IEnumerable<double> values)
+    /// <summary>
+    /// Ticks in ns on a log10 axis from <paramref name="left"/> to <paramref name="right"/>: 1, 2, 3, 5 and 7
+    /// times each power of ten that falls inside, labelled as plain numbers of ns (the axis title names the unit).
+    /// </summary>
+    private static void LogTicks(Plot plot, double left, double right)
     {
-        var logs = values.Where(v => v > 0).Select(Math.Log10).ToArray();
-        int lo = (int)Math.Floor(logs.Min()), hi = (int)Math.Ceiling(logs.Max());
         var positions = new List<double>();
         var labels = new List<string>();
-        for (int d = lo; d <= hi; d++)
-            foreach (int m in new[] { 1, 2, 5 })
+        for (int d = (int)Math.Floor(left); d <= (int)Math.Ceiling(right); d++)
+            foreach (int m in new[] { 1, 2, 3, 5, 7 })
             {
                 double v = m * Math.Pow(10, d);
-                if (Math.Log10(v) > hi + 1e-9)
+                if (Math.Log10(v) < left || Math.Log10(v) > right)
                     continue;
                 positions.Add(Math.Log10(v));
-                labels.Add(v >= 1000 ? $"{v / 1000:0.#} µs" : $"{v:0} ns");
+                labels.Add(v.ToString("#,0", System.Globalization.CultureInfo.InvariantCulture));
             }
         plot.Axes.Bottom.SetTicks(positions.ToArray(), labels.ToArray());
     }
