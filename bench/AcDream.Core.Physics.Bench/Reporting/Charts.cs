@@ -70,7 +70,7 @@ public static class Charts
     }
 
     /// <summary>
-    /// Ticks in ns on a log10 axis from <paramref name="left"/> to <paramref name="right"/>: 1, 2, 3, 5 and 7
+    /// Ticks in ns on a log10 axis from <paramref name="left"/> to <paramref name="right"/>: 1, 2, 3, 4, 5 and 7
     /// times each power of ten that falls inside, labelled as plain numbers of ns (the axis title names the unit).
     /// </summary>
     private static void LogTicks(Plot plot, double left, double right)
@@ -78,7 +78,7 @@ public static class Charts
         var positions = new List<double>();
         var labels = new List<string>();
         for (int d = (int)Math.Floor(left); d <= (int)Math.Ceiling(right); d++)
-            foreach (int m in new[] { 1, 2, 3, 5, 7 })
+            foreach (int m in new[] { 1, 2, 3, 4, 5, 7 })
             {
                 double v = m * Math.Pow(10, d);
                 if (Math.Log10(v) < left || Math.Log10(v) > right)
