@@ -39,7 +39,8 @@ public static class Program
                                         to the other (R 0: a ray)
           plot SCENE [TRAJ] --out FILE.png
                                         draw the scene (top and side views) with each
-                                        mover's path coloured by outcome
+                                        mover's path coloured by outcome, numbered, and
+                                        named in a legend (also printed)
           parity DIR                    check the engine against every parity file (*.json.gz) in
                                         DIR: one line per file; exit 1 when a file misses its
                                         threshold
