@@ -111,4 +111,4 @@ done
 
 finished=$(date +%s)
 awk -v lines="$lines" -v t0="$t0" -v t1="$t1" -v t2="$t2" -v build="$((built - started))" -v total="$((finished - started))" 'BEGIN {
-  printf "check-arm64: ok, %d lines bit-identical on x64 and ARM64 (and the committed x64 data); native run %.1f s, emulated %.1f s, build %d s, total %d s\n", lines, t1 - t0, t2 - t1, build, total }'
+  printf "check-arm64: ok, %d lines bit-identical on x64 and ARM64 (and the committed x64 data); native run %.1f s, emulated %.1f s, install and build %d s, total %d s\n", lines, t1 - t0, t2 - t1, build, total }'
