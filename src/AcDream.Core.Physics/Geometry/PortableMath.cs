@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics.Geometry;
 
@@ -25,6 +26,10 @@ internal static class PortableMath
 {
     private const double PiOver2Hi = 1.5707963267948966, PiOver2Lo = 6.123233995736766e-17;
     private const double PiHi = 3.141592653589793, PiLo = 1.2246467991473532e-16;
+
+    // π/2 = Part1 + Part2 + Part3 + Part4 (the first three of 33 significant bits each, exact).
+    private const double PiOver2Part1 = 1.5707963267341256, PiOver2Part2 = 6.077100506303966e-11;
+    private const double PiOver2Part3 = 2.0222662487111665e-21, PiOver2Part4 = 8.4784276603689e-32;
 
     // ln 2 split so that k * Ln2Hi is exact for |k| < 2^11 (Ln2Hi has 42 significant bits).
     private const double Ln2Hi = 0.6931471805598903, Ln2Lo = 5.497923018708371e-14;
@@ -59,6 +64,7 @@ internal static class PortableMath
     // ---- exact building blocks ----------------------------------------------------------------------------
 
     /// <summary>Knuth's TwoSum: s + e == a + b exactly, s the rounded sum.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double TwoSum(double a, double b, out double e)
     {
         double s = a + b;
@@ -68,6 +74,7 @@ internal static class PortableMath
     }
 
     /// <summary>Dekker's FastTwoSum (|a| ≥ |b| or a == 0): s + e == a + b exactly.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double FastTwoSum(double a, double b, out double e)
     {
         double s = a + b;
@@ -76,6 +83,7 @@ internal static class PortableMath
     }
 
     /// <summary>Dekker's TwoProduct with Veltkamp's split: p + e == a * b exactly (|a|, |b| below 2^995, no underflow).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double TwoProduct(double a, double b, out double e)
     {
         double p = a * b;
@@ -85,6 +93,7 @@ internal static class PortableMath
         return p;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void Split(double a, out double hi, out double lo)
     {
         double c = 134217729.0 * a; // 2^27 + 1
@@ -129,10 +138,11 @@ internal static class PortableMath
     public static float Cos(float x) => (float)Cos((double)x);
 
     /// <summary>
-    /// Writes a (≥ 0, finite) as n·π/2 + r, |r| ≤ π/4, r = rh + rl, returning n mod 4. Beyond π/4 it is the
-    /// Payne–Hanek reduction: a = m·2^q with m a 53-bit integer, so a·2/π mod 4 needs only the 192 bits of
-    /// 2/π from weight 2^(1−q) on; the product m × those bits, modulo 2^192, is 2 bits of quadrant and 190
-    /// bits of fraction, exact but for the bits of 2/π left out (below 2^-136 of a quadrant).
+    /// Writes a (≥ 0, finite) as n·π/2 + r, |r| ≤ π/4, r = rh + rl, returning n mod 4. Below 64 (every
+    /// angle the library turns by) it is Cody–Waite's reduction; from 64 on the Payne–Hanek reduction:
+    /// a = m·2^q with m a 53-bit integer, so a·2/π mod 4 needs only the 192 bits of 2/π from weight
+    /// 2^(1−q) on; the product m × those bits, modulo 2^192, is 2 bits of quadrant and 190 bits of
+    /// fraction, exact but for the bits of 2/π left out (below 2^-136 of a quadrant).
     /// </summary>
     private static int Reduce(double a, out double rh, out double rl)
     {
@@ -141,6 +151,17 @@ internal static class PortableMath
             rh = a;
             rl = 0.0;
             return 0;
+        }
+        if (a < 64.0)
+        {
+            // π/2 in four parts, the first three of 33 bits, so k·part is exact for k ≤ 41; a − k·Part1 is exact
+            // (both are multiples of ulp(a)), the next subtraction is a TwoSum, and the rounding of the rest is
+            // below 2^-60 of the smallest remainder a double under 64 leaves (about 2^-52).
+            double k = Math.Round(a * 0.6366197723675814);
+            double d = a - k * PiOver2Part1;
+            double hi = TwoSum(d, -(k * PiOver2Part2), out double e);
+            rh = FastTwoSum(hi, e - k * PiOver2Part3 - k * PiOver2Part4, out rl);
+            return (int)k & 3;
         }
         long bits = BitConverter.DoubleToInt64Bits(a);
         int exponent = (int)(bits >> 52) & 0x7FF; // a > π/4, so normal
@@ -200,6 +221,7 @@ internal static class PortableMath
     }
 
     /// <summary>2^e for −1022 ≤ e ≤ 1023, exactly.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double Pow2(int e) => BitConverter.Int64BitsToDouble((long)(e + 1023) << 52);
 
     /// <summary>sin(rh + rl), |rh| ≤ π/4, |rl| ≤ ulp(rh): the Taylor series through r^17 (truncation below 2^-62 relative).</summary>
@@ -311,6 +333,7 @@ internal static class PortableMath
     }
 
     /// <summary>√(ah + al) as hi + lo (ah ≥ 0, small enough for <see cref="TwoProduct"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double SqrtDD(double ah, double al, out double lo)
     {
         double s = Math.Sqrt(ah);
@@ -325,6 +348,7 @@ internal static class PortableMath
     }
 
     /// <summary>(nh + nl) / (dh + dl) as hi + lo (0 ≤ n ≤ d, d &gt; 0, moderate magnitudes).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double Divide(double nh, double nl, double dh, double dl, out double lo)
     {
         double q = nh / dh;
@@ -334,6 +358,7 @@ internal static class PortableMath
     }
 
     /// <summary>(ah + al) − (bh + bl) as hi + lo.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static double Subtract(double ah, double al, double bh, double bl, out double lo)
     {
         double s = TwoSum(ah, -bh, out double e);
