@@ -117,10 +117,10 @@ public struct Frame
         double wFrom = 1.0 - t, wTo = t;
         if (1.0 - cosom > PhysicsConstants.Epsilon)
         {
-            double omega = Math.Acos(cosom);
-            double invSin = 1.0 / Math.Sin(omega);
-            double a = invSin * Math.Sin(omega * (1.0 - t));
-            double b = Math.Sin(t * omega) * invSin;
+            double omega = Geometry.PortableMath.Acos(cosom);
+            double invSin = 1.0 / Geometry.PortableMath.Sin(omega);
+            double a = invSin * Geometry.PortableMath.Sin(omega * (1.0 - t));
+            double b = Geometry.PortableMath.Sin(t * omega) * invSin;
             if (a >= 0.0 && a <= 1.0 && b >= 0.0 && b <= 1.0)
             {
                 wFrom = a;

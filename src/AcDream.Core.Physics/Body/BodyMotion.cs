@@ -78,7 +78,7 @@ internal static class BodyMotion
             else if (velocityMag2 >= PhysicsConstants.SleddingFastSpeedSquared && normal.Z < PhysicsConstants.SleddingLevelZ)
                 f = PhysicsConstants.SleddingFriction;
         }
-        velocity *= (float)Math.Pow(1.0 - f, quantum);
+        velocity *= (float)Geometry.PortableMath.Pow(1.0 - f, quantum);
     }
 
     /// <summary>
@@ -94,8 +94,8 @@ internal static class BodyMotion
             return q;
         double theta = Math.Sqrt(length2);
         float thetaInv = (float)(1.0 / theta);
-        double sinHalf = Math.Sin(theta * 0.5);
-        float c = (float)Math.Cos(theta * 0.5);
+        double sinHalf = Geometry.PortableMath.Sin(theta * 0.5);
+        float c = (float)Geometry.PortableMath.Cos(theta * 0.5);
         float f = (float)(sinHalf * w.X * thetaInv);
         float g = (float)(thetaInv * sinHalf * w.Y);
         double h = sinHalf * thetaInv * w.Z;

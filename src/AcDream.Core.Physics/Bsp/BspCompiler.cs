@@ -297,7 +297,7 @@ public static class BspCompiler
         double lc = Math.Sqrt(cx * cx + cy * cy + cz * cz);
         double triple = ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
         double denominator = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (ax * cx + ay * cy + az * cz) * lb + (bx * cx + by * cy + bz * cz) * la;
-        return 2 * Math.Atan2(triple, denominator);
+        return 2 * PortableMath.Atan2(triple, denominator);
     }
 
     private static bool OnAnyPlane(Polygon polygon, List<(Plane Plane, bool Front)> path)
@@ -444,7 +444,7 @@ public static class BspCompiler
         for (int i = 0; i < unique.Count; i++)
         {
             var d = unique[i] - centre;
-            angles[i] = MathF.Atan2(Vector3.Dot(d, axisV), Vector3.Dot(d, axisU));
+            angles[i] = PortableMath.Atan2(Vector3.Dot(d, axisV), Vector3.Dot(d, axisU));
         }
         var ordered = unique.ToArray();
         Array.Sort(angles, ordered);

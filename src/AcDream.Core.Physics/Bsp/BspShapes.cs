@@ -82,7 +82,7 @@ public static class BspShapes
         var faces = BoxCorners(-size * 0.5f, size * 0.5f);
         foreach (var face in faces)
             for (int i = 0; i < face.Length; i++)
-                face[i] = center + Vector3.Transform(face[i], q);
+                face[i] = center + PortableRotation.Apply(face[i], q);
         return MakePolygons(faces, sides, "slab");
     }
 

@@ -167,7 +167,7 @@ internal sealed partial class Transition
                 path.SetCheckPos(path.CurPos, path.CurCell);
                 // Retail headings: 0° is north (+Y), 90° east (+X).
                 float radians = degreesPerHeading * h * (MathF.PI / 180f);
-                var offset = new Vector3(MathF.Sin(radians), MathF.Cos(radians), 0f) * distance;
+                var offset = new Vector3(Geometry.PortableMath.Sin(radians), Geometry.PortableMath.Cos(radians), 0f) * distance;
                 path.GlobalOffset = AdjustOffset(offset);
                 if (path.GlobalOffset.Length() < PhysicsConstants.Epsilon)
                     continue;

@@ -17,123 +17,16 @@ namespace AcDream.Core.Physics.Tests.Robustness;
 /// </summary>
 public class RecordedDeterminismTests
 {
-    /// <summary>A fuzz area: the features its cases may use, and the run seed its case seeds derive from.</summary>
-    internal sealed record Area(string Name, SceneFuzzer.Features Features, int Seed);
-
-    public const int CasesPerArea = 30;
-
-    internal static readonly Area[] Areas =
-    [
-        new("classic", SceneFuzzer.Features.None, 1101),
-        new("steep-terrain", SceneFuzzer.Features.SteepTerrain, 1102),
-        new("scaled-objects", SceneFuzzer.Features.ScaledObjects, 1103),
-        new("ethereal-mover", SceneFuzzer.Features.EtherealMover, 1104),
-        new("missile-mover", SceneFuzzer.Features.MissileMover, 1105),
-        new("large-objects", SceneFuzzer.Features.LargeObjects, 1106),
-        new("indoor-cell", SceneFuzzer.Features.IndoorCell, 1107),
-    ];
-
     public static TheoryData<string> AreaNames()
     {
         var data = new TheoryData<string>();
-        foreach (var a in Areas) data.Add(a.Name);
+        foreach (var a in DeterminismRecord.Areas) data.Add(a.Name);
         return data;
     }
 
     private static string Arch => RuntimeInformation.ProcessArchitecture.ToString();
     private static bool Recording => Environment.GetEnvironmentVariable("ACDREAM_RECORD_DETERMINISM") == "1";
     private static readonly string DataDirectory = Path.Combine(AppContext.BaseDirectory, "Robustness", "Determinism");
-
-    /// <summary>The names of the values of one frame, in record order (collided ids follow separately).</summary>
-    internal static readonly string[] FieldNames =
-    [
-        "cell", "origin.x", "origin.y", "origin.z", "orientation.x", "orientation.y", "orientation.z", "orientation.w",
-        "succeeded", "contact", "onWalkable", "contactPlane.normal.x", "contactPlane.normal.y", "contactPlane.normal.z",
-        "contactPlane.d", "contactPlane.cell", "slidingNormal.valid", "slidingNormal.x", "slidingNormal.y", "slidingNormal.z",
-        "collisionNormal.valid", "collisionNormal.x", "collisionNormal.y", "collisionNormal.z", "collidedWithEnvironment",
-    ];
-
-    /// <summary>Every output of one resolved frame, as raw bits (floats by their IEEE bits).</summary>
-    internal static uint[] FrameValues(in MoveResult r)
-    {
-        var n = r.Next;
-        static uint F(float f) => BitConverter.SingleToUInt32Bits(f);
-        static uint B(bool b) => b ? 1u : 0u;
-        return
-        [
-            n.Position.CellId, F(n.Position.Origin.X), F(n.Position.Origin.Y), F(n.Position.Origin.Z),
-            F(n.Position.Frame.Orientation.X), F(n.Position.Frame.Orientation.Y), F(n.Position.Frame.Orientation.Z), F(n.Position.Frame.Orientation.W),
-            B(r.Succeeded), B(n.Contact), B(n.OnWalkable), F(n.ContactPlane.Normal.X), F(n.ContactPlane.Normal.Y), F(n.ContactPlane.Normal.Z),
-            F(n.ContactPlane.D), n.ContactPlaneCellId, B(n.SlidingNormalValid), F(n.SlidingNormal.X), F(n.SlidingNormal.Y), F(n.SlidingNormal.Z),
-            B(r.CollisionNormalValid), F(r.CollisionNormal.X), F(r.CollisionNormal.Y), F(r.CollisionNormal.Z), B(r.CollidedWithEnvironment),
-        ];
-    }
-
-    private static string FrameLine(string key, int frame, in MoveResult r)
-    {
-        var sb = new StringBuilder();
-        sb.Append(key).Append('\t').Append(frame.ToString(CultureInfo.InvariantCulture)).Append('\t');
-        sb.AppendJoin(' ', FrameValues(r).Select(v => v.ToString("X8", CultureInfo.InvariantCulture)));
-        sb.Append('\t').AppendJoin(',', r.CollidedObjects.ToArray().Select(v => v.ToString("X8", CultureInfo.InvariantCulture)));
-        return sb.ToString();
-    }
-
-    /// <summary>The lines of an area: every frame of its cases.</summary>
-    internal static List<string> AreaLines(Area area)
-    {
-        var lines = new List<string>();
-        for (int i = 0; i < CasesPerArea; i++)
-        {
-            var c = SceneFuzzer.Make(FuzzTests.CaseSeed(area.Seed, i), area.Features);
-            var engine = new PhysicsEngine(c.World);
-            var state = c.Start;
-            for (int f = 0; f < c.Targets.Count; f++)
-            {
-                var r = engine.Resolve(c.Mover, state, SceneFuzzer.TargetFor(state, c.Targets[f]));
-                lines.Add(FrameLine(c.Seed.ToString(CultureInfo.InvariantCulture), f, r));
-                state = r.Next;
-            }
-        }
-        return lines;
-    }
-
-    /// <summary>FNV-1a over every frame of one mover of a scene.</summary>
-    internal static ulong MoverHash(Scene scene, int moverIndex)
-    {
-        var mover = scene.Movers[moverIndex];
-        var engine = new PhysicsEngine(scene.World);
-        ulong h = 14695981039346656037UL;
-        void Add(uint x) { for (int i = 0; i < 4; i++) { h ^= (byte)(x >> (8 * i)); h *= 1099511628211UL; } }
-        var state = mover.Start;
-        var body = mover.StartBody;
-        for (int f = 0; f < mover.FrameCount; f++)
-        {
-            MoveResult r;
-            if (mover.IsBody)
-            {
-                // A body mover (PhysicsEngine.Step): its velocity and quanta count too.
-                var step = mover.Steps[f];
-                var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
-                body = stepped.Body;
-                Add(BitConverter.SingleToUInt32Bits(body.Velocity.X));
-                Add(BitConverter.SingleToUInt32Bits(body.Velocity.Y));
-                Add(BitConverter.SingleToUInt32Bits(body.Velocity.Z));
-                Add((uint)stepped.Quanta);
-                r = stepped.Move;
-            }
-            else
-            {
-                var target = state.Position;
-                target.Frame.Origin += mover.Motion[f];
-                r = engine.Resolve(mover.Description, state, target);
-            }
-            foreach (uint v in FrameValues(r)) Add(v);
-            Add((uint)r.CollidedObjects.Length);
-            foreach (uint id in r.CollidedObjects.Span) Add(id);
-            state = r.Next;
-        }
-        return h;
-    }
 
     private static string SourceDataDirectory()
     {
@@ -175,9 +68,9 @@ public class RecordedDeterminismTests
             return $"case/frame: expected case seed {e[0]} frame {e[1]}, actual case seed {a[0]} frame {a[1]} (the generator or the frame count changed)";
         var ev = e[2].Split(' ');
         var av = a[2].Split(' ');
-        for (int i = 0; i < FieldNames.Length; i++)
+        for (int i = 0; i < DeterminismRecord.FieldNames.Length; i++)
             if (ev[i] != av[i])
-                return $"case seed {e[0]} (SceneFuzzer.Make), frame {e[1]}, field {FieldNames[i]}: expected 0x{ev[i]} ({Show(FieldNames[i], ev[i])}), actual 0x{av[i]} ({Show(FieldNames[i], av[i])})";
+                return $"case seed {e[0]} (SceneFuzzer.Make), frame {e[1]}, field {DeterminismRecord.FieldNames[i]}: expected 0x{ev[i]} ({Show(DeterminismRecord.FieldNames[i], ev[i])}), actual 0x{av[i]} ({Show(DeterminismRecord.FieldNames[i], av[i])})";
         if (e[3] != a[3])
             return $"case seed {e[0]} (SceneFuzzer.Make), frame {e[1]}, field collided: expected [{e[3]}], actual [{a[3]}]";
         return null;
@@ -194,8 +87,8 @@ public class RecordedDeterminismTests
     [MemberData(nameof(AreaNames))]
     public void FuzzArea_ResolvesEveryFrameAsRecorded(string name)
     {
-        var area = Areas.Single(a => a.Name == name);
-        var produced = AreaLines(area);
+        var area = DeterminismRecord.Areas.Single(a => a.Name == name);
+        var produced = DeterminismRecord.AreaLines(area);
         var (recorded, file) = Load($"area.{name}", produced);
         for (int i = 0; i < Math.Min(recorded.Length, produced.Count); i++)
         {
@@ -204,7 +97,7 @@ public class RecordedDeterminismTests
                 Assert.Fail($"area '{name}' ({area.Features}, run seed {area.Seed}): {d}{ArchNote(file)}");
         }
         Assert.True(recorded.Length == produced.Count, $"area '{name}': {produced.Count} frames produced, {recorded.Length} recorded{ArchNote(file)}");
-        Assert.True(produced.Count >= CasesPerArea, $"area '{name}': only {produced.Count} frames");
+        Assert.True(produced.Count >= DeterminismRecord.CasesPerArea, $"area '{name}': only {produced.Count} frames");
     }
 
     [Theory]
@@ -212,9 +105,7 @@ public class RecordedDeterminismTests
     public void BuiltInScene_EveryMoverMatchesItsRecordedHash(string name)
     {
         var scene = SceneLibrary.Load(name);
-        var produced = new List<string>();
-        for (int m = 0; m < scene.Movers.Count; m++)
-            produced.Add($"{scene.Movers[m].Name}\t0x{MoverHash(scene, m):X16}");
+        var produced = DeterminismRecord.SceneLines(name);
         var (recorded, file) = Load($"scene.{name}", produced);
         Assert.True(recorded.Length == produced.Count, $"scene '{name}': {produced.Count} movers, {recorded.Length} recorded{ArchNote(file)}");
         for (int m = 0; m < produced.Count; m++)
@@ -238,7 +129,7 @@ public class RecordedDeterminismTests
     [Fact]
     public void AnAlteredRecord_IsReported_WithCaseFrameAndField()
     {
-        var line = AreaLines(Areas[0])[0];
+        var line = DeterminismRecord.AreaLines(DeterminismRecord.Areas[0])[0];
         var parts = line.Split('\t');
         var values = parts[2].Split(' ');
         values[2] = (uint.Parse(values[2], NumberStyles.HexNumber, CultureInfo.InvariantCulture) ^ 1u).ToString("X8", CultureInfo.InvariantCulture); // origin.y, last bit

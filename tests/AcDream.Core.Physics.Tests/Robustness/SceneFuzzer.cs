@@ -60,6 +60,9 @@ internal sealed class SceneFuzzer
         public override string ToString() => $"case seed {Seed}: " + string.Join("; ", Description);
     }
 
+    /// <summary>The seed of case <paramref name="index"/> of a run with seed <paramref name="seed"/>.</summary>
+    public static int CaseSeed(int seed, int index) => unchecked(seed * 1_000_003 + index);
+
     public static Case Make(int seed) => Make(seed, Features.None);
 
     public static Case Make(int seed, Features features)
