@@ -68,7 +68,7 @@ public sealed partial class PhysicsEngine
     private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        if (_lastRefusal.Matches(mover, state, target))
+        if (_lastRefusal.Matches(mover, state, target, _transition.World.Cells.RemovalCount))
             return Refused(state);
         // The start position is read where it lies, copied only when its rotation must be normalized: a
         // copy is written a field at a time and the path reads it whole soon after, which waits for the
@@ -87,7 +87,7 @@ public sealed partial class PhysicsEngine
         var t = _transition;
         if (t.RefusesBeforeFirstStep(mover, state, begin, target, out var plan))
         {
-            _lastRefusal.Remember(mover, state, target);
+            _lastRefusal.Remember(mover, state, target, _transition.World.Cells.RemovalCount);
             return Refused(state);
         }
         Prepare(t, mover, state);

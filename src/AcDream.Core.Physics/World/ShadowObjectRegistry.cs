@@ -167,6 +167,71 @@ public sealed class ShadowObjectRegistry
     }
 
     /// <summary>
+    /// Takes every row listed in a landblock's cells (land and env cells) out of the registry, before the
+    /// landblock's cells leave the graph (<see cref="PhysicsWorld.UnloadLandblock"/>). An object listed in
+    /// other cells too (it straddles a landblock border) keeps those rows and stays registered, at its
+    /// position; an object left with no row is unregistered. The cells' emptied lists are kept for the
+    /// next load. Allocates nothing.
+    /// </summary>
+    internal void DropLandblock(uint landblock)
+    {
+        Version++;
+        for (uint i = 1; i <= 64; i++)
+            DropCell((landblock << 16) | i);
+        foreach (var env in _graph.EnvCellsOf(landblock))
+            DropCell(env.Id);
+    }
+
+    private void DropCell(uint cellId)
+    {
+        if (_byCell.Get(cellId) is not { Count: > 0 } slots)
+            return;
+        for (int s = 0; s < slots.Count; s++)
+        {
+            // Read from the list each time: dropping an earlier cell of the same object renumbered it.
+            var record = slots[s].Record;
+            int k = slots[s].CellIndex;
+            record.Cells.RemoveAt(k);
+            record.Slots.RemoveAt(k);
+            // The object's later cells moved down one place: their lists' slots say so.
+            for (int j = k; j < record.Cells.Count; j++)
+            {
+                var list = _byCell.Get(record.Cells[j])!;
+                list[record.Slots[j]] = list[record.Slots[j]] with { CellIndex = j };
+            }
+            if (record.Cells.Count == 0)
+                _objects.Remove(record.Id);
+        }
+        slots.Clear();
+    }
+
+    /// <summary>
+    /// Lists the objects already registered in the cells of a landblock just added
+    /// (<see cref="PhysicsWorld.LoadLandblock"/>): every object standing in that landblock or one beside it
+    /// gets the rows its shapes would have had there had the landblock been loaded when it was registered,
+    /// appended to those cells' lists (the objects' other rows are left as they are). The objects are visited
+    /// in the registry's order, which depends only on the order of registrations and removals.
+    /// </summary>
+    internal void ListInLandblock(uint landblock)
+    {
+        Version++;
+        int bx = (int)(landblock >> 8), by = (int)(landblock & 0xFF);
+        foreach (var record in _objects.Values)
+        {
+            uint home = record.Position.CellId >> 16;
+            if (Math.Abs((int)(home >> 8) - bx) > 1 || Math.Abs((int)(home & 0xFF) - by) > 1)
+                continue;
+            FindCells(record, _newCells);
+            foreach (uint cellId in _newCells)
+            {
+                if (cellId >> 16 != landblock || record.Cells.Contains(cellId) || _graph.Get(cellId) is null)
+                    continue;
+                Append(record, cellId);
+            }
+        }
+    }
+
+    /// <summary>
     /// The rows of a cell's objects, in the order they are tested (empty for a cell with no objects): rows of
     /// one object are contiguous. Builds a new array: for inspection and tests, not for the per-frame path.
     /// </summary>
@@ -366,16 +431,19 @@ public sealed class ShadowObjectRegistry
         record.Cells.Clear();
         record.Slots.Clear();
         for (int k = 0; k < cells.Count; k++)
-        {
-            uint cellId = cells[k];
-            var slots = _byCell.Get(cellId);
-            if (slots is null)
-                _byCell.Set(cellId, slots = new List<Slot>());
-            record.Cells.Add(cellId);
-            record.Slots.Add(slots.Count);
-            var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
-            slots.Add(new Slot(record, k, record.ReachMin + offset, record.ReachMax + offset));
-        }
+            Append(record, cells[k]);
+    }
+
+    /// <summary>Appends the object to one cell's list and records that cell as its next one.</summary>
+    private void Append(Record record, uint cellId)
+    {
+        var slots = _byCell.Get(cellId);
+        if (slots is null)
+            _byCell.Set(cellId, slots = new List<Slot>());
+        record.Cells.Add(cellId);
+        record.Slots.Add(slots.Count);
+        var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
+        slots.Add(new Slot(record, record.Cells.Count - 1, record.ReachMin + offset, record.ReachMax + offset));
     }
 
     /// <summary>
