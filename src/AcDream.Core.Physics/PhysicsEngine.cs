@@ -173,6 +173,8 @@ public sealed partial class PhysicsEngine
         }
         if (state.SlidingNormalValid)
             t.InitSlidingNormal(state.SlidingNormal);
+        if (state.Ground != GroundKind.None)
+            t.InitGround(state.Ground, state.GroundObjectId);
     }
 
     /// <summary>The result of a move refused before its first sub-step: nothing moved and nothing was hit.</summary>
