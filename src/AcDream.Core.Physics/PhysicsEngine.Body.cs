@@ -61,6 +61,7 @@ public sealed partial class PhysicsEngine
         b.Acceleration = BodyMotion.Acceleration(ps, s.Contact, s.OnWalkable);
 
         _stepCollided.Clear();
+        _acceptedTransitions = 0;
         var last = new QuantumOutcome();
         int quanta = 0;
         if ((ps & PhysicsState.Frozen) != 0)
@@ -105,7 +106,7 @@ public sealed partial class PhysicsEngine
         b.PendingTime = pending;
         var move = new MoveResult(!last.Refused, s, last.Refused ? TransitionState.Collided : TransitionState.OK, last.CollisionNormalValid,
             last.CollisionNormal, last.Environment, _stepCollided.Items, last.LastCollided, last.VelocityKilled);
-        return new BodyStepResult(move, b, quanta, jumped);
+        return new BodyStepResult(move, b, quanta, jumped) { Transitions = _acceptedTransitions };
     }
 
     private static BodyStepResult Unmoved(in MoverState s, in BodyState b, bool jumped) =>

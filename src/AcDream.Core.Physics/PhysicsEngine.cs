@@ -16,6 +16,8 @@ public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
     private RefusalMemo _lastRefusal;
+    // Transitions accepted since a body step began (BodyStepResult.Transitions).
+    private int _acceptedTransitions;
 
     /// <summary>Creates an engine over a world.</summary>
     public PhysicsEngine(PhysicsWorld world) => _transition = new Transition(world);
@@ -95,6 +97,7 @@ public sealed partial class PhysicsEngine
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition(in plan);
+        if (ok) _acceptedTransitions++;
         return new MoveResult(t, ok, state);
     }
 

@@ -31,6 +31,14 @@ public readonly struct BodyStepResult
     /// </summary>
     public int Quanta { get; }
 
+    /// <summary>
+    /// How many of the quanta ran a transition that was accepted (retail SetPositionInternal, and with it
+    /// handle_all_collisions, ran): fewer than <see cref="Quanta"/> when a quantum moved the body less than
+    /// EPSILON (no transition) or its transition was refused. <see cref="ContactTracker"/> tracks only steps
+    /// with one.
+    /// </summary>
+    public int Transitions { get; internal init; }
+
     /// <summary>The jump was taken (a non-zero jump speed was given and retail's jump_is_allowed held).</summary>
     public bool Jumped { get; }
 }

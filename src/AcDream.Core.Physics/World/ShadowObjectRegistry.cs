@@ -63,6 +63,14 @@ public sealed class ShadowObjectRegistry
     /// <summary>True when an object with this id is registered.</summary>
     public bool Contains(uint entityId) => _objects.ContainsKey(entityId);
 
+    /// <summary>The state an object is registered with, or false when it is not registered.</summary>
+    internal bool TryGetState(uint entityId, out PhysicsState state)
+    {
+        bool found = _objects.TryGetValue(entityId, out var record);
+        state = found ? record!.State : PhysicsState.None;
+        return found;
+    }
+
     /// <summary>
     /// Registers an object from its setup. <see cref="PhysicsState.HasPhysicsBsp"/> is set when any part has
     /// a physics model (retail CacheHasPhysicsBSP) and is also kept when the caller's state has it.
