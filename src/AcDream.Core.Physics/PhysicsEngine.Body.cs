@@ -83,6 +83,7 @@ public sealed partial class PhysicsEngine
         }
         if (pending <= PhysicsConstants.MaxQuantum)
         {
+            b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
             Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
             quanta = 1;
             pending = 0;
@@ -91,6 +92,7 @@ public sealed partial class PhysicsEngine
         {
             do
             {
+                b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
                 Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, ref last);
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
@@ -98,6 +100,7 @@ public sealed partial class PhysicsEngine
             while (pending > PhysicsConstants.MaxQuantum);
             if (pending > PhysicsConstants.MinQuantum)
             {
+                b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
                 Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
                 quanta++;
                 pending = 0;
