@@ -22,6 +22,8 @@ public sealed class ShadowObjectRegistry
         public required uint Id;
         public required ShadowShape[] Shapes;
         public required ShadowEntry[] Rows;
+        /// <summary>The setup the object was registered from (null when registered from shapes alone), for snapshots.</summary>
+        public PhysicsSetup? Setup;
         public Position Position;
         public float Scale;
         public PhysicsState State;
@@ -63,6 +65,9 @@ public sealed class ShadowObjectRegistry
     /// <summary>True when an object with this id is registered.</summary>
     public bool Contains(uint entityId) => _objects.ContainsKey(entityId);
 
+    /// <summary>The registered objects in the registry's order (see <see cref="ListInLandblock"/>), for snapshots.</summary>
+    internal Dictionary<uint, Record>.ValueCollection Records => _objects.Values;
+
     /// <summary>The state an object is registered with, or false when it is not registered.</summary>
     internal bool TryGetState(uint entityId, out PhysicsState state)
     {
@@ -82,11 +87,12 @@ public sealed class ShadowObjectRegistry
         var shapes = ShadowShapeBuilder.FromSetup(setup, scale, $"object 0x{entityId:X8}.setup");
         if (setup.HasPhysicsBsp)
             state |= PhysicsState.HasPhysicsBsp;
-        Register(entityId, shapes, position, scale, state, flags);
+        Register(entityId, shapes, position, scale, state, flags, setup);
     }
 
     /// <summary>Registers an object from shapes already built by <see cref="ShadowShapeBuilder.FromSetup"/>.</summary>
-    internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
+    internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None,
+        PhysicsSetup? setup = null)
     {
         ArgumentNullException.ThrowIfNull(shapes);
         string name = $"object 0x{entityId:X8}";
@@ -101,7 +107,7 @@ public sealed class ShadowObjectRegistry
         var record = new Record
         {
             Id = entityId, Shapes = (ShadowShape[])shapes.Clone(), Rows = new ShadowEntry[shapes.Length],
-            Position = position, Scale = scale, State = state, Flags = flags,
+            Position = position, Scale = scale, State = state, Flags = flags, Setup = setup,
         };
         foreach (var shape in shapes)
         {
@@ -153,11 +159,11 @@ public sealed class ShadowObjectRegistry
         Unregister(entityId);
         try
         {
-            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags);
+            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags, old.Setup);
         }
         catch
         {
-            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags);
+            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags, old.Setup);
             throw;
         }
     }
