@@ -78,6 +78,13 @@ public class GroundTests
     }
 
     [Fact]
+    public void MoverState_GrowsByTheObjectIdOnly()
+    {
+        // 72 bytes before: the kind sits in the padding after OnWalkable, the id adds 4 (a hot-path copy).
+        Assert.Equal(76, System.Runtime.CompilerServices.Unsafe.SizeOf<MoverState>());
+    }
+
+    [Fact]
     public void GroundState_IsRetailsContactAndOnWalkable()
     {
         var s = new MoverState();

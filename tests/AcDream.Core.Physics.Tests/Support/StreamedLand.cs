@@ -9,8 +9,10 @@ namespace AcDream.Core.Physics.Tests.Support;
 /// <summary>
 /// A 5 × 5 landblock area built procedurally: rolling terrain (a sum of sines of the global vertex
 /// coordinates, so borders match), and on every landblock border, near the walk's line, a static box
-/// straddling the border and a creature-like cylinder beside it. Objects are at least 24 m apart, so no land
-/// cell lists two of them (the order of a cell's objects then cannot matter). A host streams it by
+/// straddling the border (homed just west of it, reaching 5 m east, where the walker slides along it) and a
+/// creature-like cylinder. Where the line crosses an east-west and a south-north border close together, a
+/// crate and a post share a land cell; both worlds list them crate first (the whole world registers in this
+/// list's order; the streamed one loads the crate's home landblock first). A host streams it by
 /// <see cref="Load"/> and <see cref="PhysicsWorld.UnloadLandblock"/>.
 /// </summary>
 internal sealed class StreamedLand
