@@ -15,8 +15,10 @@ namespace AcDream.Core.Physics.Snapshots;
 /// </summary>
 /// <remarks>
 /// <para>Layout (little-endian): the magic "ACPS", a version (u16, <see cref="Version"/>), then sections, each a
-/// tag (u8), a length (u32) and that many bytes. Tags: 1 mover state, 2 body state, 3 objects; 4 is kept for the
-/// motion state (CMotionInterp) the motion layer will add. A reader skips sections whose tag it does not know,
+/// tag (u8), a length (u32) and that many bytes. Tags: 1 mover state, 2 body state, 3 objects, 5 the objects'
+/// places in their cells' lists (the order retail tests a cell's objects in, which moves and removals change:
+/// CObjCell::remove_shadow_object moves the last object into the hole); 4 is kept for the motion state
+/// (CMotionInterp) the motion layer will add. A reader skips sections whose tag it does not know,
 /// so a newer writer's extra sections are read past; a missing section it needs is an error.</para>
 /// <para>Reading never reads past the bytes given (at most <see cref="MaxBytes"/>), checks every float is finite
 /// and every enum known, and reports a bad snapshot with an <see cref="InvalidDataException"/> naming the field and
@@ -30,7 +32,7 @@ public static class Snapshot
     /// <summary>The largest snapshot read, in bytes (64 MiB: about 1.3 million objects).</summary>
     public const int MaxBytes = 64 << 20;
 
-    private const byte MoverTag = 1, BodyTag = 2, ObjectsTag = 3;
+    private const byte MoverTag = 1, BodyTag = 2, ObjectsTag = 3, CellOrderTag = 5;
     private const int ObjectBytes = 4 + 4 + 32 + 4 + 4 + 1;
     private static ReadOnlySpan<byte> Magic => "ACPS"u8;
 
@@ -75,7 +77,7 @@ public static class Snapshot
         ArgumentNullException.ThrowIfNull(world);
         ArgumentNullException.ThrowIfNull(setupKey);
         var w = Begin();
-        Span<int> sections = stackalloc int[1];
+        Span<int> sections = stackalloc int[2];
         sections[0] = w.BeginSection(ObjectsTag);
         int count = 0;
         foreach (var o in world.Objects.Records)
@@ -94,12 +96,27 @@ public static class Snapshot
             w.U32((uint)o.State);
             w.Byte((byte)o.Flags);
         }
+        // Each object's place in each of its cells' lists, in the same order.
+        sections[1] = w.BeginSection(CellOrderTag);
+        foreach (var o in world.Objects.Records)
+        {
+            if (inGroup is not null && !inGroup(o.Position.CellId >> 16))
+                continue;
+            int n = Math.Min(o.Cells.Count, byte.MaxValue);
+            w.Byte((byte)n);
+            for (int k = 0; k < n; k++)
+            {
+                w.U32(o.Cells[k]);
+                w.U32((uint)o.Slots[k]);
+            }
+        }
         return w.Finish(sections);
     }
 
     /// <summary>
     /// Registers the objects <see cref="SaveObjects"/> wrote into <paramref name="world"/> (its cells must be
-    /// loaded), in the order written, each with the setup <paramref name="setupOf"/> returns for its key.
+    /// loaded), in the order written, each with the setup <paramref name="setupOf"/> returns for its key; then
+    /// puts them back in their places in each cell's list (the saved places, among the places they took).
     /// All or nothing: a bad snapshot, an id already registered or a position the world refuses throws, and
     /// the objects this call registered are removed again. Returns how many were registered.
     /// </summary>
@@ -111,9 +128,29 @@ public static class Snapshot
         ArgumentNullException.ThrowIfNull(setupOf);
         var r = Open(data);
         List<(uint Id, uint Key, Position Position, float Scale, PhysicsState State, World.ShadowFlags Flags)>? objects = null;
+        Dictionary<uint, List<(uint Id, uint Rank)>>? order = null;
         while (r.Remaining > 0)
         {
             var section = NextSection(ref r, out byte tag);
+            if (tag == CellOrderTag)
+            {
+                if (objects is null)
+                    throw section.Fail("cellOrder", "comes before the objects section");
+                order = new();
+                for (int i = 0; i < objects.Count; i++)
+                {
+                    int n = section.U8($"cellOrder[{i}].count");
+                    for (int k = 0; k < n; k++)
+                    {
+                        uint cell = section.U32($"cellOrder[{i}][{k}].cell");
+                        uint place = section.U32($"cellOrder[{i}][{k}].place");
+                        if (!order.TryGetValue(cell, out var list))
+                            order.Add(cell, list = new());
+                        list.Add((objects[i].Id, place));
+                    }
+                }
+                continue;
+            }
             if (tag != ObjectsTag)
                 continue;
             uint count = section.U32("objects.count");
@@ -150,6 +187,9 @@ public static class Snapshot
                 world.Objects.Unregister(objects[i].Id);
             throw;
         }
+        if (order is not null)
+            foreach (var (cell, ranks) in order)
+                world.Objects.RestoreOrder(cell, ranks);
         return done;
     }
 

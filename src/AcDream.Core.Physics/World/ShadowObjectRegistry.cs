@@ -68,6 +68,38 @@ public sealed class ShadowObjectRegistry
     /// <summary>The registered objects in the registry's order (see <see cref="ListInLandblock"/>), for snapshots.</summary>
     internal Dictionary<uint, Record>.ValueCollection Records => _objects.Values;
 
+    /// <summary>
+    /// Puts the given objects of a cell's list back in a saved order (a snapshot restored): the places the
+    /// given objects hold in the list are handed out again to them sorted by their saved rank; other
+    /// objects keep their places. Unknown ids and objects not listed in the cell are ignored.
+    /// </summary>
+    internal void RestoreOrder(uint cellId, IReadOnlyList<(uint Id, uint Rank)> ranks)
+    {
+        if (_byCell.Get(cellId) is not { Count: > 1 } slots)
+            return;
+        var places = new List<int>();
+        var entries = new List<(uint Rank, Slot Slot)>();
+        foreach (var (id, rank) in ranks)
+        {
+            if (!_objects.TryGetValue(id, out var record))
+                continue;
+            int k = record.Cells.IndexOf(cellId);
+            if (k < 0)
+                continue;
+            places.Add(record.Slots[k]);
+            entries.Add((rank, slots[record.Slots[k]]));
+        }
+        places.Sort();
+        entries.Sort((a, b) => a.Rank.CompareTo(b.Rank));
+        for (int i = 0; i < places.Count; i++)
+        {
+            var slot = entries[i].Slot;
+            slots[places[i]] = slot;
+            slot.Record.Slots[slot.CellIndex] = places[i];
+        }
+        Version++;
+    }
+
     /// <summary>The state an object is registered with, or false when it is not registered.</summary>
     internal bool TryGetState(uint entityId, out PhysicsState state)
     {

@@ -137,7 +137,9 @@ public class SnapshotTests
         var bytes = Snapshot.SaveObjects(source, s => (uint)setups.IndexOf(s), lb => lb == group);
         var inGroup = land.Things.Where(t => t.Home == group).ToList();
         Assert.NotEmpty(inGroup);
-        Assert.Equal(4 + 2 + 5 + 4 + inGroup.Count * 49, bytes.Length);
+        // The objects (49 bytes each), then each one's places in its cells (a count, then 8 bytes a cell).
+        int places = inGroup.Sum(t => 1 + 8 * source.Objects.CellsOf(t.Id).Count);
+        Assert.Equal(4 + 2 + 5 + 4 + inGroup.Count * 49 + 5 + places, bytes.Length);
 
         var target = new PhysicsWorld();
         target.LoadLandblock(StreamedLand.TerrainOf(1, 1));
@@ -156,5 +158,24 @@ public class SnapshotTests
         var countTooLarge = Patch(bytes, 11, BitConverter.GetBytes(1_000_000u));
         var ex = Assert.Throws<InvalidDataException>(() => Snapshot.LoadObjects(countTooLarge, new PhysicsWorld(), k => setups[(int)k]));
         Assert.StartsWith("snapshot objects.count", ex.Message);
+    }
+
+    [Fact]
+    public void ObjectsRestored_TakeTheirPlacesInEachCellsList_AfterARemovalReorderedIt()
+    {
+        var setup = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] };
+        var source = TestGeometry.FlatWorld();
+        for (uint id = 1; id <= 4; id++)
+            source.Objects.Register(id, setup, TestGeometry.At(100 + id, 100, 0.5f));
+        // Retail's removal moves the cell's last object into the hole: 4, 2, 3.
+        source.Objects.Unregister(1);
+        uint cell = TestGeometry.At(101, 100, 0).CellId;
+        static uint[] Order(PhysicsWorld w, uint cell) => w.Objects.RowsInCell(cell).ToArray().Select(r => r.EntityId).ToArray();
+        Assert.Equal([4u, 2u, 3u], Order(source, cell));
+
+        var bytes = Snapshot.SaveObjects(source, _ => 7u);
+        var target = TestGeometry.FlatWorld();
+        Snapshot.LoadObjects(bytes, target, _ => setup);
+        Assert.Equal([4u, 2u, 3u], Order(target, cell));
     }
 }
