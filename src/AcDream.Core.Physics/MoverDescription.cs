@@ -125,6 +125,12 @@ public struct MoverState
     public bool Contact;
     /// <summary>That plane was walkable.</summary>
     public bool OnWalkable;
+    /// <summary>
+    /// What set the contact plane (<see cref="GroundKind"/>): terrain, an indoor cell's floor, a building, an
+    /// object (<see cref="GroundObjectId"/>), or None when no plane is known. Kept with the plane from frame
+    /// to frame, as the plane is; it changes no result.
+    /// </summary>
+    public GroundKind Ground;
     /// <summary>The last contact plane (valid when it was ever set).</summary>
     public Plane ContactPlane;
     /// <summary>The cell whose landblock space <see cref="ContactPlane"/> is in; 0 when no plane is known.</summary>
@@ -135,6 +141,15 @@ public struct MoverState
     public bool SlidingNormalValid;
     /// <summary>The sliding normal.</summary>
     public Vector3 SlidingNormal;
+    /// <summary>The object whose shape set the contact plane when <see cref="Ground"/> is <see cref="GroundKind.Object"/>, else 0.</summary>
+    public uint GroundObjectId;
+
+    /// <summary>
+    /// The contact in retail's terms (<see cref="Physics.GroundState"/>): <see cref="Contact"/> and
+    /// <see cref="OnWalkable"/> summed up as walkable ground, a steep surface, or airborne.
+    /// </summary>
+    public readonly GroundState GroundState =>
+        !Contact ? GroundState.Airborne : OnWalkable ? GroundState.WalkableGround : GroundState.SteepSurface;
 
     /// <summary>A mover in the air (no known ground) at a position.</summary>
     public static MoverState Airborne(Position position) => new() { Position = position };
@@ -218,6 +233,8 @@ public readonly struct MoveResult
             _next.OnWalkable = ci.ContactPlaneValid && ci.ContactPlane.Normal.Z >= PhysicsConstants.FloorZ;
             _next.SlidingNormalValid = ci.SlidingNormalValid;
             _next.SlidingNormal = ci.SlidingNormal;
+            _next.Ground = ci.ContactGround;
+            _next.GroundObjectId = ci.ContactGroundObject;
             LastState = TransitionState.OK;
         }
         else

@@ -92,6 +92,13 @@ public static class PhysicsConstants
     public const float MaxElasticity = 0.1f;
 
     /// <summary>
+    /// Seconds after its last touch at which retail forgets a collision record and reports the end of the
+    /// contact: CPhysicsObj::report_collision_end ends a record when curr_time − touched_time &gt; 1.0
+    /// (CPhysicsObj.c:6177), or &gt; 0 for an ethereal object. See <see cref="Body.ContactTracker"/>.
+    /// </summary>
+    public const double CollisionRecordTimeout = 1.0;
+
+    /// <summary>
     /// calc_friction leaves the velocity alone when it leaves the contact plane at this speed or faster,
     /// m/s (v·N ≥ 0.25, CPhysicsObj.c:556 and 582).
     /// </summary>

@@ -65,6 +65,7 @@ public sealed partial class PhysicsEngine
         b.Acceleration = BodyMotion.Acceleration(ps, s.Contact, s.OnWalkable);
 
         _stepCollided.Clear();
+        _acceptedTransitions = 0;
         var last = new QuantumOutcome();
         int quanta = 0;
         if ((ps & PhysicsState.Frozen) != 0)
@@ -86,6 +87,7 @@ public sealed partial class PhysicsEngine
         }
         if (pending <= PhysicsConstants.MaxQuantum)
         {
+            b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
             Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
             quanta = 1;
             pending = 0;
@@ -94,6 +96,7 @@ public sealed partial class PhysicsEngine
         {
             do
             {
+                b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
                 Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, ref last);
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
@@ -101,6 +104,7 @@ public sealed partial class PhysicsEngine
             while (pending > PhysicsConstants.MaxQuantum);
             if (pending > PhysicsConstants.MinQuantum)
             {
+                b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
                 Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
                 quanta++;
                 pending = 0;
@@ -109,7 +113,7 @@ public sealed partial class PhysicsEngine
         b.PendingTime = pending;
         var move = new MoveResult(!last.Refused, s, last.Refused ? TransitionState.Collided : TransitionState.OK, last.CollisionNormalValid,
             last.CollisionNormal, last.Environment, _stepCollided.Items, last.LastCollided, last.VelocityKilled);
-        return new BodyStepResult(move, b, quanta, jumped);
+        return new BodyStepResult(move, b, quanta, jumped) { Transitions = _acceptedTransitions };
     }
 
     private static BodyStepResult Unmoved(in MoverState s, in BodyState b, bool jumped) =>

@@ -16,6 +16,8 @@ public sealed partial class PhysicsEngine
 {
     private readonly Transition _transition;
     private RefusalMemo _lastRefusal;
+    // Transitions accepted since a body step began (BodyStepResult.Transitions).
+    private int _acceptedTransitions;
 
     /// <summary>Creates an engine over a world.</summary>
     public PhysicsEngine(PhysicsWorld world) => _transition = new Transition(world);
@@ -72,7 +74,7 @@ public sealed partial class PhysicsEngine
     private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
     {
         ArgumentNullException.ThrowIfNull(mover);
-        if (_lastRefusal.Matches(mover, state, target))
+        if (_lastRefusal.Matches(mover, state, target, _transition.World.Cells.RemovalCount))
             return Refused(state);
         // The start position is read where it lies, copied only when its rotation must be normalized: a
         // copy is written a field at a time and the path reads it whole soon after, which waits for the
@@ -91,7 +93,7 @@ public sealed partial class PhysicsEngine
         var t = _transition;
         if (t.RefusesBeforeFirstStep(mover, state, begin, target, out var plan))
         {
-            _lastRefusal.Remember(mover, state, target);
+            _lastRefusal.Remember(mover, state, target, _transition.World.Cells.RemovalCount);
             return Refused(state);
         }
         Prepare(t, mover, state);
@@ -99,6 +101,7 @@ public sealed partial class PhysicsEngine
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition(in plan);
+        if (ok) _acceptedTransitions++;
         return new MoveResult(t, ok, state);
     }
 
@@ -177,6 +180,8 @@ public sealed partial class PhysicsEngine
         }
         if (state.SlidingNormalValid)
             t.InitSlidingNormal(state.SlidingNormal);
+        if (state.Ground != GroundKind.None)
+            t.InitGround(state.Ground, state.GroundObjectId);
     }
 
     /// <summary>The result of a move refused before its first sub-step: nothing moved and nothing was hit.</summary>

@@ -64,6 +64,13 @@ public struct BodyState
     public double PendingTime { readonly get; internal set; }
 
     /// <summary>
+    /// Where the body was when its last quantum began (cell 0 before its first quantum): with the current
+    /// position and <see cref="BodyStepResult.QuantumFraction"/> it is what a renderer blends between quanta
+    /// (<see cref="SmoothFrames"/>). Not read by the physics.
+    /// </summary>
+    public Position QuantumStart { readonly get; internal set; }
+
+    /// <summary>
     /// A player or creature at rest: retail's default friction and elasticity, with a motion interpreter.
     /// </summary>
     public static BodyState Creature() => new()

@@ -1,3 +1,5 @@
+using System;
+
 namespace AcDream.Core.Physics.Body;
 
 /// <summary>The outcome of one <see cref="PhysicsEngine.Step"/>: the move, the body's new state, and how many quanta ran.</summary>
@@ -30,6 +32,29 @@ public readonly struct BodyStepResult
     /// gathered or when the elapsed time was dropped (longer than <see cref="PhysicsConstants.HugeQuantum"/>).
     /// </summary>
     public int Quanta { get; }
+
+    /// <summary>
+    /// How many of the quanta ran a transition that was accepted (retail SetPositionInternal, and with it
+    /// handle_all_collisions, ran): fewer than <see cref="Quanta"/> when a quantum moved the body less than
+    /// EPSILON (no transition) or its transition was refused. <see cref="ContactTracker"/> tracks only steps
+    /// with one.
+    /// </summary>
+    public int Transitions { get; internal init; }
+
+    /// <summary>
+    /// How much of the next quantum has gathered: <see cref="BodyState.PendingTime"/> /
+    /// <see cref="PhysicsConstants.MinQuantum"/>, from 0 to 1. A renderer draws the body that far from
+    /// <see cref="BodyState.QuantumStart"/> towards the current position (<see cref="SmoothPose"/>), at most one
+    /// quantum behind the physics, so that every frame advances even when no quantum ran.
+    /// </summary>
+    public float QuantumFraction => (float)Math.Clamp(Body.PendingTime / PhysicsConstants.MinQuantum, 0.0, 1.0);
+
+    /// <summary>
+    /// The pose to draw this frame, in the landblock space of the current position's cell:
+    /// <see cref="SmoothFrames.Blend"/> of <see cref="BodyState.QuantumStart"/> and the current position by
+    /// <see cref="QuantumFraction"/>.
+    /// </summary>
+    public Frame SmoothPose => SmoothFrames.Blend(Body.QuantumStart, Next.Position, QuantumFraction);
 
     /// <summary>The jump was taken (a non-zero jump speed was given and retail's jump_is_allowed held).</summary>
     public bool Jumped { get; }

@@ -392,6 +392,7 @@ internal static class BspQuery
     {
         collisions.SetContactPlane(ContactPlaneOf(path, polygon, scale), isWater: false);
         collisions.ContactPlaneCellId = path.CheckPos.CellId;
+        collisions.SetGround(path.BuildingCheck ? GroundKind.Building : GroundKind.EnvCell);
         path.SetWalkable(validPos, polygon, path.LocalSpaceZ, path.LocalSpacePos, scale);
     }
 }

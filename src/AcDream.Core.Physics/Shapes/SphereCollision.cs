@@ -399,6 +399,7 @@ internal static class SphereCollision
         var plane = new Plane(normal, VectorMath.PlaneDThrough(normal, point));
         transition.CollisionInfo.SetContactPlane(plane, isWater: true);
         transition.CollisionInfo.ContactPlaneCellId = transition.SpherePath.CheckPos.CellId;
+        transition.CollisionInfo.SetGround(GroundKind.Object);
     }
 
     /// <summary>

@@ -25,6 +25,19 @@ internal sealed class CollisionInfo
     public uint ContactPlaneCellId;
     /// <summary>The contact plane is water.</summary>
     public bool ContactPlaneIsWater;
+    /// <summary>What set the contact plane (not retail: retail keeps only the plane and its cell).</summary>
+    public GroundKind ContactGround;
+    /// <summary>The object whose shape set the contact plane, or 0.</summary>
+    public uint ContactGroundObject;
+    /// <summary>What set the last known contact plane.</summary>
+    public GroundKind LastKnownGround;
+    /// <summary>The object whose shape set the last known contact plane, or 0.</summary>
+    public uint LastKnownGroundObject;
+    /// <summary>
+    /// The object whose shape is being tested (0 outside object tests), so that a contact plane found by
+    /// a shape test is known to be that object's.
+    /// </summary>
+    public uint ShapeOwner;
     /// <summary>A sliding normal constrains the next step.</summary>
     public bool SlidingNormalValid;
     /// <summary>The sliding normal (horizontal).</summary>
@@ -64,6 +77,11 @@ internal sealed class CollisionInfo
         ContactPlane = default;
         ContactPlaneCellId = 0;
         ContactPlaneIsWater = false;
+        ContactGround = GroundKind.None;
+        ContactGroundObject = 0;
+        LastKnownGround = GroundKind.None;
+        LastKnownGroundObject = 0;
+        ShapeOwner = 0;
         SlidingNormalValid = false;
         SlidingNormal = default;
         CollisionNormalValid = false;
@@ -82,6 +100,17 @@ internal sealed class CollisionInfo
         ContactPlaneValid = true;
         ContactPlane = plane;
         ContactPlaneIsWater = isWater;
+    }
+
+    /// <summary>
+    /// Records what set the contact plane just set: the object whose shape is being tested, when there is
+    /// one, else <paramref name="kind"/>.
+    /// </summary>
+    public void SetGround(GroundKind kind)
+    {
+        uint owner = ShapeOwner;
+        ContactGround = owner != 0 ? GroundKind.Object : kind;
+        ContactGroundObject = owner;
     }
 
     /// <summary>Drops the contact plane of this step.</summary>

@@ -168,7 +168,9 @@ internal static class ObjectCollisions
                     rung == ShadowShapeKind.Bsp ? SkipReason.BspOnlyDispatch : row.Kind == ShadowShapeKind.Bsp ? SkipReason.NotBspDispatch : SkipReason.HasCylinders);
                 continue;
             }
+            transition.CollisionInfo.ShapeOwner = row.EntityId;
             var result = TestShape(transition, row, isCreature);
+            transition.CollisionInfo.ShapeOwner = 0;
             observer?.OnShapeTested(row.EntityId, row.Kind, row.Shape.Index, result);
             if (result != TransitionState.OK)
             {

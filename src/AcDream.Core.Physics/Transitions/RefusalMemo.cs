@@ -11,8 +11,10 @@ namespace AcDream.Core.Physics.Transitions;
 /// the work (not retail; changes no result). A client whose player pushes into a wall sends the very
 /// same request every frame: the state the refusal handed back, and the same step towards the wall.
 /// The refusal depends only on the request: the mover (immutable), its state, the target and the
-/// engine's sub-step scale. The input checks passed for it and still pass, since the world never
-/// removes a cell, and no object or cell geometry is consulted before the first sub-step.
+/// engine's sub-step scale. The input checks passed for it and still pass while the world removes no
+/// cell (the memo is keyed by the graph's <see cref="World.CellGraph.RemovalCount"/>: after a landblock
+/// is unloaded the request is checked again), and no object or cell geometry is consulted before the
+/// first sub-step.
 /// </summary>
 internal struct RefusalMemo
 {
@@ -20,6 +22,7 @@ internal struct RefusalMemo
     private MoverDescription? _mover;
     private MoverState _state;
     private Position _target;
+    private int _removals;
 
     /// <summary>Forgets the refusal (the engine's settings changed).</summary>
     public void Clear()
@@ -29,8 +32,9 @@ internal struct RefusalMemo
     }
 
     /// <summary>Remembers a refused request.</summary>
-    public void Remember(MoverDescription mover, in MoverState state, in Position target)
+    public void Remember(MoverDescription mover, in MoverState state, in Position target, int removals)
     {
+        _removals = removals;
         _mover = mover;
         _state = state;
         _target = target;
@@ -38,8 +42,8 @@ internal struct RefusalMemo
     }
 
     /// <summary>True when this request is, bit for bit, the one last refused.</summary>
-    public readonly bool Matches(MoverDescription mover, in MoverState state, in Position target) =>
-        _valid && ReferenceEquals(mover, _mover) && Position.SameBits(target, _target) && SameBits(state, _state);
+    public readonly bool Matches(MoverDescription mover, in MoverState state, in Position target, int removals) =>
+        _valid && removals == _removals && ReferenceEquals(mover, _mover) && Position.SameBits(target, _target) && SameBits(state, _state);
 
     private static bool SameBits(in MoverState a, in MoverState b) =>
         Position.SameBits(a.Position, b.Position)

@@ -282,6 +282,7 @@ internal sealed partial class Transition
             {
                 ci.SetContactPlane(plane, isWater);
                 ci.ContactPlaneCellId = cellId;
+                ci.SetGround(GroundKind.Terrain);
             }
             if (reportGround)
             {
@@ -297,6 +298,7 @@ internal sealed partial class Transition
         {
             ci.SetContactPlane(plane, isWater);
             ci.ContactPlaneCellId = cellId;
+            ci.SetGround(GroundKind.Terrain);
             if (path.StepDown)
             {
                 float interp = (1.0f - -1.0f / (path.StepDownAmt * path.WalkInterp) * zDist) * path.WalkInterp;

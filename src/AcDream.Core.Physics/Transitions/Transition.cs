@@ -319,6 +319,7 @@ internal sealed partial class Transition
                         {
                             ci.SetContactPlane(ci.LastKnownContactPlane, ci.LastKnownContactPlaneIsWater);
                             ci.ContactPlaneCellId = ci.LastKnownContactPlaneCellId;
+                            (ci.ContactGround, ci.ContactGroundObject) = (ci.LastKnownGround, ci.LastKnownGroundObject);
                             if ((ObjectInfo.State & ObjectInfoState.OnWalkable) != 0)
                                 redo = true;
                         }
@@ -352,6 +353,7 @@ internal sealed partial class Transition
             ci.LastKnownContactPlane = ci.ContactPlane;
             ci.LastKnownContactPlaneCellId = ci.ContactPlaneCellId;
             ci.LastKnownContactPlaneIsWater = ci.ContactPlaneIsWater;
+            (ci.LastKnownGround, ci.LastKnownGroundObject) = (ci.ContactGround, ci.ContactGroundObject);
             ObjectInfo.State |= ObjectInfoState.Contact;
             if (ObjectInfo.IsValidWalkable(ci.ContactPlane.Normal))
                 ObjectInfo.State |= ObjectInfoState.OnWalkable;
@@ -384,6 +386,7 @@ internal sealed partial class Transition
         var floor = new Plane(Vector3.UnitZ, sphere.Radius - sphere.Center.Z);
         ci.SetContactPlane(floor, false);
         ci.ContactPlaneCellId = SpherePath.CheckPos.CellId;
+        (ci.ContactGround, ci.ContactGroundObject) = (GroundKind.StationaryFall, 0u);
         if ((ObjectInfo.State & ObjectInfoState.Contact) == 0)
         {
             ci.SetCollisionNormal(floor.Normal);
@@ -435,6 +438,14 @@ internal sealed partial class Transition
         InitLastKnownContactPlane(cellId, plane, isWater);
         CollisionInfo.SetContactPlane(plane, isWater);
         CollisionInfo.ContactPlaneCellId = cellId;
+    }
+
+    /// <summary>What set the carried contact plane (the state's <see cref="MoverState.Ground"/>), for both the plane and the last known one.</summary>
+    internal void InitGround(GroundKind ground, uint objectId)
+    {
+        var ci = CollisionInfo;
+        (ci.ContactGround, ci.ContactGroundObject) = (ground, objectId);
+        (ci.LastKnownGround, ci.LastKnownGroundObject) = (ground, objectId);
     }
 
     /// <summary>Sets the last known contact plane (retail init_last_known_contact_plane).</summary>

@@ -20,8 +20,18 @@ public sealed class CellGraph
 
     // The outdoor cells again, by array: the cell search and the per-frame checks look land cells up
     // several times per transition, and array reads are cheaper than a hash lookup. Filled when a
-    // landblock is added; never changed after.
+    // landblock is added, emptied when it is removed.
     private readonly CellTable<LandCell> _land = new();
+
+    // The env cells of each landblock, so a landblock is removed without a search of every cell. A
+    // landblock's list is kept, empty, when it is removed (loading it again allocates no list).
+    private readonly Dictionary<uint, List<EnvCell>> _envByBlock = new();
+
+    /// <summary>
+    /// Changes whenever cells are removed: work an engine remembers between calls that assumed its cells
+    /// exist (the refusal memo) is forgotten.
+    /// </summary>
+    internal int RemovalCount { get; private set; }
 
     /// <summary>
     /// Adds a land block's 64 outdoor cells built from its terrain. All or nothing: a landblock already in
@@ -53,7 +63,41 @@ public sealed class CellGraph
         ArgumentNullException.ThrowIfNull(cell);
         if (!_cells.TryAdd(cell.Id, cell))
             throw new ArgumentException($"cell 0x{cell.Id:X8}: is already in the world.", nameof(cell));
+        uint block = cell.Id >> 16;
+        if (!_envByBlock.TryGetValue(block, out var list))
+            _envByBlock.Add(block, list = new List<EnvCell>());
+        list.Add(cell);
     }
+
+    /// <summary>True when the landblock has land cells or env cells in the world.</summary>
+    public bool HasLandblock(uint landblock) =>
+        landblock <= 0xFFFF && (_land.Get((landblock << 16) | 1) is not null || _envByBlock.TryGetValue(landblock, out var env) && env.Count > 0);
+
+    /// <summary>
+    /// Takes a landblock's cells out of the graph: its 64 land cells (with the buildings standing in them)
+    /// and its env cells. Only through <see cref="PhysicsWorld.UnloadLandblock"/>, which first takes the
+    /// objects' rows out of those cells. Allocates nothing.
+    /// </summary>
+    internal void RemoveLandblock(uint landblock)
+    {
+        for (uint i = 1; i <= 64; i++)
+        {
+            uint id = (landblock << 16) | i;
+            if (_cells.Remove(id))
+                _land.Remove(id);
+        }
+        if (_envByBlock.TryGetValue(landblock, out var env))
+        {
+            foreach (var cell in env)
+                _cells.Remove(cell.Id);
+            env.Clear();
+        }
+        RemovalCount++;
+    }
+
+    /// <summary>A landblock's env cells (empty when it has none), in the order they were added.</summary>
+    internal ReadOnlySpan<EnvCell> EnvCellsOf(uint landblock) =>
+        _envByBlock.TryGetValue(landblock, out var env) ? System.Runtime.InteropServices.CollectionsMarshal.AsSpan(env) : default;
 
     /// <summary>Places a building in the outdoor cell at its position; its entrance cells must exist.</summary>
     public void AddBuilding(Building building)

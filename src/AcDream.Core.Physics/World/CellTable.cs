@@ -60,6 +60,24 @@ internal readonly struct CellTable<T> where T : class
         }
     }
 
+    /// <summary>
+    /// Forgets the value for a cell (a landblock being unloaded). The landblock's array stays for the next
+    /// load, so removing and adding again allocates nothing.
+    /// </summary>
+    public void Remove(uint cellId)
+    {
+        uint index = (cellId & 0xFFFF) - 1;
+        if (index < 64)
+        {
+            if (_land[cellId >> 24]?[(cellId >> 16) & 0xFF] is { } block)
+                block[index] = null;
+        }
+        else
+        {
+            _indoor.Remove(cellId);
+        }
+    }
+
     // Apart so that Get inlines: the outdoor path is the array reads.
     private T? GetIndoor(uint cellId) => _indoor.TryGetValue(cellId, out var value) ? value : null;
 }

@@ -22,6 +22,8 @@ public sealed class ShadowObjectRegistry
         public required uint Id;
         public required ShadowShape[] Shapes;
         public required ShadowEntry[] Rows;
+        /// <summary>The setup the object was registered from (null when registered from shapes alone), for snapshots.</summary>
+        public PhysicsSetup? Setup;
         public Position Position;
         public float Scale;
         public PhysicsState State;
@@ -63,6 +65,49 @@ public sealed class ShadowObjectRegistry
     /// <summary>True when an object with this id is registered.</summary>
     public bool Contains(uint entityId) => _objects.ContainsKey(entityId);
 
+    /// <summary>The registered objects in the registry's order (see <see cref="ListInLandblock"/>), for snapshots.</summary>
+    internal Dictionary<uint, Record>.ValueCollection Records => _objects.Values;
+
+    /// <summary>
+    /// Puts the given objects of a cell's list back in a saved order (a snapshot restored): the places the
+    /// given objects hold in the list are handed out again to them sorted by their saved rank; other
+    /// objects keep their places. Unknown ids and objects not listed in the cell are ignored.
+    /// </summary>
+    internal void RestoreOrder(uint cellId, IReadOnlyList<(uint Id, uint Rank)> ranks)
+    {
+        if (_byCell.Get(cellId) is not { Count: > 1 } slots)
+            return;
+        var places = new List<int>();
+        var entries = new List<(uint Rank, Slot Slot)>();
+        foreach (var (id, rank) in ranks)
+        {
+            if (!_objects.TryGetValue(id, out var record))
+                continue;
+            int k = record.Cells.IndexOf(cellId);
+            if (k < 0)
+                continue;
+            places.Add(record.Slots[k]);
+            entries.Add((rank, slots[record.Slots[k]]));
+        }
+        places.Sort();
+        entries.Sort((a, b) => a.Rank.CompareTo(b.Rank));
+        for (int i = 0; i < places.Count; i++)
+        {
+            var slot = entries[i].Slot;
+            slots[places[i]] = slot;
+            slot.Record.Slots[slot.CellIndex] = places[i];
+        }
+        Version++;
+    }
+
+    /// <summary>The state an object is registered with, or false when it is not registered.</summary>
+    internal bool TryGetState(uint entityId, out PhysicsState state)
+    {
+        bool found = _objects.TryGetValue(entityId, out var record);
+        state = found ? record!.State : PhysicsState.None;
+        return found;
+    }
+
     /// <summary>
     /// Registers an object from its setup. <see cref="PhysicsState.HasPhysicsBsp"/> is set when any part has
     /// a physics model (retail CacheHasPhysicsBSP) and is also kept when the caller's state has it.
@@ -74,11 +119,12 @@ public sealed class ShadowObjectRegistry
         var shapes = ShadowShapeBuilder.FromSetup(setup, scale, $"object 0x{entityId:X8}.setup");
         if (setup.HasPhysicsBsp)
             state |= PhysicsState.HasPhysicsBsp;
-        Register(entityId, shapes, position, scale, state, flags);
+        Register(entityId, shapes, position, scale, state, flags, setup);
     }
 
     /// <summary>Registers an object from shapes already built by <see cref="ShadowShapeBuilder.FromSetup"/>.</summary>
-    internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
+    internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None,
+        PhysicsSetup? setup = null)
     {
         ArgumentNullException.ThrowIfNull(shapes);
         string name = $"object 0x{entityId:X8}";
@@ -93,7 +139,7 @@ public sealed class ShadowObjectRegistry
         var record = new Record
         {
             Id = entityId, Shapes = (ShadowShape[])shapes.Clone(), Rows = new ShadowEntry[shapes.Length],
-            Position = position, Scale = scale, State = state, Flags = flags,
+            Position = position, Scale = scale, State = state, Flags = flags, Setup = setup,
         };
         foreach (var shape in shapes)
         {
@@ -145,11 +191,11 @@ public sealed class ShadowObjectRegistry
         Unregister(entityId);
         try
         {
-            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags);
+            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags, old.Setup);
         }
         catch
         {
-            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags);
+            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags, old.Setup);
             throw;
         }
     }
@@ -164,6 +210,71 @@ public sealed class ShadowObjectRegistry
             return false;
         RemoveFromCells(record);
         return true;
+    }
+
+    /// <summary>
+    /// Takes every row listed in a landblock's cells (land and env cells) out of the registry, before the
+    /// landblock's cells leave the graph (<see cref="PhysicsWorld.UnloadLandblock"/>). An object listed in
+    /// other cells too (it straddles a landblock border) keeps those rows and stays registered, at its
+    /// position; an object left with no row is unregistered. The cells' emptied lists are kept for the
+    /// next load. Allocates nothing.
+    /// </summary>
+    internal void DropLandblock(uint landblock)
+    {
+        Version++;
+        for (uint i = 1; i <= 64; i++)
+            DropCell((landblock << 16) | i);
+        foreach (var env in _graph.EnvCellsOf(landblock))
+            DropCell(env.Id);
+    }
+
+    private void DropCell(uint cellId)
+    {
+        if (_byCell.Get(cellId) is not { Count: > 0 } slots)
+            return;
+        for (int s = 0; s < slots.Count; s++)
+        {
+            // Read from the list each time: dropping an earlier cell of the same object renumbered it.
+            var record = slots[s].Record;
+            int k = slots[s].CellIndex;
+            record.Cells.RemoveAt(k);
+            record.Slots.RemoveAt(k);
+            // The object's later cells moved down one place: their lists' slots say so.
+            for (int j = k; j < record.Cells.Count; j++)
+            {
+                var list = _byCell.Get(record.Cells[j])!;
+                list[record.Slots[j]] = list[record.Slots[j]] with { CellIndex = j };
+            }
+            if (record.Cells.Count == 0)
+                _objects.Remove(record.Id);
+        }
+        slots.Clear();
+    }
+
+    /// <summary>
+    /// Lists the objects already registered in the cells of a landblock just added
+    /// (<see cref="PhysicsWorld.LoadLandblock"/>): every object standing in that landblock or one beside it
+    /// gets the rows its shapes would have had there had the landblock been loaded when it was registered,
+    /// appended to those cells' lists (the objects' other rows are left as they are). The objects are visited
+    /// in the registry's order, which depends only on the order of registrations and removals.
+    /// </summary>
+    internal void ListInLandblock(uint landblock)
+    {
+        Version++;
+        int bx = (int)(landblock >> 8), by = (int)(landblock & 0xFF);
+        foreach (var record in _objects.Values)
+        {
+            uint home = record.Position.CellId >> 16;
+            if (Math.Abs((int)(home >> 8) - bx) > 1 || Math.Abs((int)(home & 0xFF) - by) > 1)
+                continue;
+            FindCells(record, _newCells);
+            foreach (uint cellId in _newCells)
+            {
+                if (cellId >> 16 != landblock || record.Cells.Contains(cellId) || _graph.Get(cellId) is null)
+                    continue;
+                Append(record, cellId);
+            }
+        }
     }
 
     /// <summary>
@@ -366,16 +477,19 @@ public sealed class ShadowObjectRegistry
         record.Cells.Clear();
         record.Slots.Clear();
         for (int k = 0; k < cells.Count; k++)
-        {
-            uint cellId = cells[k];
-            var slots = _byCell.Get(cellId);
-            if (slots is null)
-                _byCell.Set(cellId, slots = new List<Slot>());
-            record.Cells.Add(cellId);
-            record.Slots.Add(slots.Count);
-            var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
-            slots.Add(new Slot(record, k, record.ReachMin + offset, record.ReachMax + offset));
-        }
+            Append(record, cells[k]);
+    }
+
+    /// <summary>Appends the object to one cell's list and records that cell as its next one.</summary>
+    private void Append(Record record, uint cellId)
+    {
+        var slots = _byCell.Get(cellId);
+        if (slots is null)
+            _byCell.Set(cellId, slots = new List<Slot>());
+        record.Cells.Add(cellId);
+        record.Slots.Add(slots.Count);
+        var offset = LandDefs.BlockOffset(cellId, record.Position.CellId);
+        slots.Add(new Slot(record, record.Cells.Count - 1, record.ReachMin + offset, record.ReachMax + offset));
     }
 
     /// <summary>

@@ -7,7 +7,8 @@ namespace AcDream.Core.Physics.Tests.Docs;
 /// <summary>
 /// The README's "Using the library" code is the example's code: each C# block of that section equals,
 /// in order, a region marked <c>#region readme</c> in examples/WalkThrough/Program.cs, which the build
-/// compiles and CI runs. Both files are embedded into this assembly at build time.
+/// compiles and CI runs; likewise "A client's world" and the <c>#region client-world</c> regions of
+/// examples/StreamingWalk/Program.cs. The files are embedded into this assembly at build time.
 /// </summary>
 public class ReadmeExampleTests
 {
@@ -19,24 +20,29 @@ public class ReadmeExampleTests
         return reader.ReadToEnd().Replace("\r\n", "\n");
     }
 
-    private static List<string> ReadmeBlocks()
+    private static List<string> ReadmeBlocks(string heading = "Using the library")
     {
         string readme = Resource("README.md");
-        var section = Regex.Match(readme, @"^## Using the library\n(.*?)(?=^## |\z)", RegexOptions.Multiline | RegexOptions.Singleline);
-        Assert.True(section.Success, "README.md has no \"## Using the library\" section");
+        var section = Regex.Match(readme, @"^## " + Regex.Escape(heading) + @"\n(.*?)(?=^## |\z)", RegexOptions.Multiline | RegexOptions.Singleline);
+        Assert.True(section.Success, $"README.md has no \"## {heading}\" section");
         return Regex.Matches(section.Groups[1].Value, @"^```csharp\n(.*?)^```", RegexOptions.Multiline | RegexOptions.Singleline)
             .Select(m => m.Groups[1].Value).ToList();
     }
 
-    private static List<string> ExampleRegions() =>
-        Regex.Matches(Resource("WalkThrough.Program.cs"), @"^#region readme\n(.*?)^#endregion", RegexOptions.Multiline | RegexOptions.Singleline)
+    private static List<string> ExampleRegions(string program = "WalkThrough.Program.cs", string region = "readme") =>
+        Regex.Matches(Resource(program), @"^#region " + region + @"\n(.*?)^#endregion", RegexOptions.Multiline | RegexOptions.Singleline)
             .Select(m => m.Groups[1].Value).ToList();
 
     [Fact]
-    public void UsingTheLibrary_CodeBlocks_AreTheExamplesReadmeRegions()
+    public void UsingTheLibrary_CodeBlocks_AreTheExamplesReadmeRegions() =>
+        SameText(ReadmeBlocks(), ExampleRegions());
+
+    [Fact]
+    public void AClientsWorld_CodeBlocks_AreTheStreamingWalksRegions() =>
+        SameText(ReadmeBlocks("A client's world"), ExampleRegions("StreamingWalk.Program.cs", "client-world"));
+
+    private static void SameText(List<string> blocks, List<string> regions)
     {
-        var blocks = ReadmeBlocks();
-        var regions = ExampleRegions();
         Assert.True(regions.Count >= 2, $"the example has {regions.Count} readme regions");
         Assert.Equal(regions.Count, blocks.Count);
         for (int i = 0; i < blocks.Count; i++)

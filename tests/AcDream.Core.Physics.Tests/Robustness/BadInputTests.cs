@@ -203,6 +203,10 @@ public class BadInputTests
         ["W17"] = new("Building()", "shell null", "shell", _ => new Building(null!, TestGeometry.At(1, 1, 0), [])),
         ["W18"] = new("Building()", "position NaN", "building.position.origin", _ => new Building(Model(), new Position(TestGeometry.At(1, 1, 0).CellId, NaN3), [])),
         ["W19"] = new("Building()", "rotation zero-length", "building.position.orientation", _ => House(rotation: Zero)),
+        ["W20"] = new("PhysicsWorld.LoadLandblock", "landblock already loaded", "landblock 0xA9B4", f => f.World.LoadLandblock(Terrain.Flat(TestGeometry.Landblock, 5f))),
+        ["W21"] = new("PhysicsWorld.LoadLandblock", "an env cell of another landblock", "envCells[0]", f => f.World.LoadLandblock(Terrain.Flat(0xAAB4, 0f), [new EnvCell(0xA9B40101, Frame.Identity, null, CellBox())])),
+        ["W22"] = new("PhysicsWorld.LoadLandblock", "a building of another landblock", "buildings[0]", f => f.World.LoadLandblock(Terrain.Flat(0xAAB4, 0f), null, [House()])),
+        ["W23"] = new("PhysicsWorld.UnloadLandblock", "landblock not loaded", "landblock 0x1234", f => f.World.UnloadLandblock(0x1234)),
         // Hostile input (issue 14)
         ["H01"] = new("PhysicsEngine.Resolve", "target rotation with components 1e20 (length overflows)", "target.orientation", f => { var t = f.Target; t.Frame.Orientation = Huge; f.Resolve(f.State, t); }),
         ["H02"] = new("PhysicsEngine.Resolve", "state rotation with components 1e20", "state.position.orientation", f => { var s = f.State; s.Position.Frame.Orientation = Huge; f.Resolve(s, f.Target); }),
