@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics.Body;
 /// <summary>
 /// Retail's per-quantum body arithmetic (CPhysicsObj, acclient-src PORTAL/cphysobj/CPhysicsObj.c):
 /// acceleration, friction, integration, the collision response and the leave-ground velocity. Pure
-/// functions of their arguments; <see cref="PhysicsEngine.Step"/> strings them together.
+/// functions of their arguments; <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/> strings them together.
 /// </summary>
 internal static class BodyMotion
 {
@@ -35,22 +35,60 @@ internal static class BodyMotion
         PhysicsState physicsState, float friction)
     {
         var offset = Vector3.Zero;
-        float mag2 = velocity.LengthSquared();
-        if (mag2 > 0f)
-        {
-            if (mag2 > PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity)
-            {
-                velocity = Vector3.Normalize(velocity) * PhysicsConstants.MaxVelocity;
-                mag2 = PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity;
-            }
-            ApplyFriction(ref velocity, quantum, mag2, state, physicsState, friction);
-            // Retail quirk: the small-speed test uses |v|² from before friction (CPhysicsObj.c:2192).
-            if (mag2 - PhysicsConstants.SmallVelocity * PhysicsConstants.SmallVelocity < PhysicsConstants.Epsilon)
-                velocity = Vector3.Zero;
+        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction))
             offset = velocity * quantum + acceleration * (0.5f * quantum * quantum);
-        }
         velocity += acceleration * quantum;
         return offset;
+    }
+
+    /// <summary>
+    /// UpdatePhysicsInternal as retail rounds it (CPhysicsObj.c:2143-2227; its x87 code runs at 53 bits): the same
+    /// steps as <see cref="Integrate"/>, but the displacement v·q + ½·a·q² is computed in double per axis with
+    /// retail's float stores and added to <paramref name="origin"/> directly (after the animation's offset, as
+    /// UpdatePositionInternal orders them), and the velocity advanced as v + q·a per axis. The motion-layer
+    /// body step uses it; the desired-velocity step keeps <see cref="Integrate"/>'s float arithmetic.
+    /// </summary>
+    public static void IntegrateInto(ref Vector3 origin, ref Vector3 velocity, Vector3 acceleration, float quantum, in MoverState state,
+        PhysicsState physicsState, float friction)
+    {
+        double q = quantum;
+        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction))
+        {
+            var v = velocity;
+            var a = acceleration;
+            float tx = (float)(a.X * 0.5 * q);
+            tx = (float)(tx * q);
+            float dx = (float)(q * v.X + tx);
+            origin.X = (float)(dx + origin.X);
+            float ty = (float)(a.Y * 0.5 * q * q);
+            origin.Y = (float)(q * v.Y + ty + origin.Y);
+            float hz = (float)(a.Z * 0.5);
+            float pz = (float)(q * v.Z);
+            float dz = (float)(pz + hz * q * q);
+            origin.Z = (float)(dz + origin.Z);
+        }
+        velocity.X = (float)(q * acceleration.X + velocity.X);
+        velocity.Y = (float)(q * acceleration.Y + velocity.Y);
+        velocity.Z = (float)((float)(q * acceleration.Z) + velocity.Z);
+    }
+
+    // The part of UpdatePhysicsInternal before the displacement: the cap, friction and the small-speed cut; false
+    // when the body is at rest (no displacement this quantum).
+    private static bool PrepareVelocity(ref Vector3 velocity, float quantum, in MoverState state, PhysicsState physicsState, float friction)
+    {
+        float mag2 = velocity.LengthSquared();
+        if (!(mag2 > 0f))
+            return false;
+        if (mag2 > PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity)
+        {
+            velocity = Vector3.Normalize(velocity) * PhysicsConstants.MaxVelocity;
+            mag2 = PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity;
+        }
+        ApplyFriction(ref velocity, quantum, mag2, state, physicsState, friction);
+        // Retail quirk: the small-speed test uses |v|² from before friction (CPhysicsObj.c:2192).
+        if (mag2 - PhysicsConstants.SmallVelocity * PhysicsConstants.SmallVelocity < PhysicsConstants.Epsilon)
+            velocity = Vector3.Zero;
+        return true;
     }
 
     /// <summary>

@@ -1,0 +1,116 @@
+using System;
+using System.Globalization;
+using System.Numerics;
+using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Motion;
+
+namespace AcDream.Core.Physics.Parity;
+
+/// <summary>
+/// Runs a motion parity file through the motion layer and the body step and compares every frame: the position
+/// within <see cref="ParityCheck.Tolerance"/>, the cell, contact and walkable flags, whether a quantum ran, the
+/// calls' results and the interpreted state (equal, speeds to the bit). The schedule is the file's: each frame
+/// the calls, then 1/rate seconds given to the step (which runs a quantum once 1/30 s has gathered, as the
+/// recording's rule).
+/// </summary>
+internal static class MotionParityCheck
+{
+    public static ParityReport Check(MotionParityFile file)
+    {
+        var engine = new PhysicsEngine(file.World);
+        var motion = new ObjectMotion(file.Table, file.Skills);
+        var state = file.Start;
+        var body = file.StartBody;
+        motion.Place(file.Mover, state, ref body);
+        int frames = 0, within = 0, identical = 0, mismatches = 0;
+        double maxDifference = 0;
+        string? firstFailure = null;
+        for (int f = 0; f < file.Frames.Length; f++)
+        {
+            ref readonly var expected = ref file.Frames[f];
+            string? callFailure = null;
+            foreach (var call in expected.Calls)
+            {
+                string result = Apply(motion, call, file.Mover, ref state, ref body);
+                if (result != call.Expected)
+                    callFailure ??= $"call {call.Kind} 0x{call.Motion:X8}: expected {call.Expected}, actual {result}";
+            }
+            var step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
+            state = step.Next;
+            body = step.Body;
+            frames++;
+            var position = state.Position.Frame.Origin;
+            double difference = Distance(position, expected.Position);
+            maxDifference = Math.Max(maxDifference, difference);
+            if (difference <= ParityCheck.Tolerance) within++;
+            if (VectorMath.SameBits(position, expected.Position)) identical++;
+            string? flag = callFailure ?? FlagDifference(expected, state, step.Quanta > 0, motion.Interpreted);
+            if (flag is not null) mismatches++;
+            if (firstFailure is null)
+            {
+                if (flag is not null)
+                    firstFailure = $"{file.Name}: frame {f}: {flag}";
+                else if (!(difference <= ParityCheck.Tolerance))
+                    firstFailure = string.Format(CultureInfo.InvariantCulture, "{0}: frame {1}: position: expected {2}, actual {3} (difference {4:0.###e0} m)",
+                        file.Name, f, expected.Position, position, difference);
+            }
+        }
+        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure);
+    }
+
+    private static string Apply(ObjectMotion motion, in MotionCall call, MoverDescription mover, ref MoverState state, ref Body.BodyState body)
+    {
+        switch (call.Kind)
+        {
+            case MotionCallKind.HoldRun:
+                // The recording sets the raw hold key as retail's CMotionInterp::SetHoldKey(Run) does.
+                motion.SetHoldKey(HoldKey.Run, mover, ref state, ref body);
+                return "None";
+            case MotionCallKind.DoMotion:
+                return Name(motion.DoMotion(call.Motion, new MotionParameters(call.Speed, call.Hold), mover, ref state, ref body));
+            case MotionCallKind.StopMotion:
+                return Name(motion.StopMotion(call.Motion, new MotionParameters(call.Speed, call.Hold), mover, ref state, ref body));
+            default:
+                var charge = motion.ChargeJump(mover, state, body);
+                if (charge != MotionError.None)
+                    return Name(charge);
+                return Name(motion.Jump(call.Extent, call.Stamina > 0, mover, ref state, ref body));
+        }
+    }
+
+    // ACE's WeenieError names for the results the files record.
+    private static string Name(MotionError e) => e switch
+    {
+        MotionError.None => "None",
+        MotionError.NoMotionTableData => "NoMtableData",
+        MotionError.CantJumpWhileInTheAir => "YouCantJumpWhileInTheAir",
+        MotionError.CantJumpFromThisPosition => "YouCantJumpFromThisPosition",
+        _ => e.ToString(),
+    };
+
+    private static string? FlagDifference(in MotionParityFrame e, in MoverState a, bool quantumRan, in InterpretedMotionState i)
+    {
+        if (a.Position.CellId != e.Cell) return $"cell: expected 0x{e.Cell:X8}, actual 0x{a.Position.CellId:X8}";
+        if (a.Contact != e.Contact) return $"contact: expected {e.Contact}, actual {a.Contact}";
+        if (a.OnWalkable != e.Walkable) return $"walkable: expected {e.Walkable}, actual {a.OnWalkable}";
+        if (quantumRan != e.QuantumRan) return $"quantum ran: expected {e.QuantumRan}, actual {quantumRan}";
+        var x = e.Interpreted;
+        if (i.Style != x.Style || i.ForwardCommand != x.ForwardCommand || !Same(i.ForwardSpeed, x.ForwardSpeed)
+            || i.SideStepCommand != x.SideStepCommand || !Same(i.SideStepSpeed, x.SideStepSpeed)
+            || i.TurnCommand != x.TurnCommand || !Same(i.TurnSpeed, x.TurnSpeed))
+            return $"interpreted state: expected {Describe(x)}, actual {Describe(i)}";
+        return null;
+    }
+
+    private static bool Same(float a, float b) => BitConverter.SingleToInt32Bits(a) == BitConverter.SingleToInt32Bits(b);
+
+    private static string Describe(in InterpretedMotionState s) => string.Format(CultureInfo.InvariantCulture,
+        "style 0x{0:X8} forward 0x{1:X8}×{2:R} sidestep 0x{3:X8}×{4:R} turn 0x{5:X8}×{6:R}",
+        s.Style, s.ForwardCommand, s.ForwardSpeed, s.SideStepCommand, s.SideStepSpeed, s.TurnCommand, s.TurnSpeed);
+
+    private static double Distance(Vector3 a, Vector3 b)
+    {
+        double dx = (double)a.X - b.X, dy = (double)a.Y - b.Y, dz = (double)a.Z - b.Z;
+        return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+    }
+}
