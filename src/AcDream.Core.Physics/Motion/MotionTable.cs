@@ -107,6 +107,22 @@ public sealed class MotionTable
     internal bool HasLinksFrom(uint outerKey, out Dictionary<uint, MotionData> inner) => _links.TryGetValue(outerKey, out inner!);
     internal Animation Animation(uint id) => _animations[id];
 
+    /// <summary>Whether the table has anything for a command: a style, a cycle or modifier in one of its styles, a modifier of any style, or a link to it.</summary>
+    internal bool Knows(uint motion)
+    {
+        if ((motion & MotionCommandMask.Style) != 0 && _styleDefaults.ContainsKey(motion))
+            return true;
+        foreach (var (style, _) in _styleDefaults)
+            if (_cycles.ContainsKey(CycleKey(style, motion)) || _modifiers.ContainsKey(CycleKey(style, motion)))
+                return true;
+        if (_modifiers.ContainsKey(motion & MotionCommandMask.Command))
+            return true;
+        foreach (var (_, inner) in _links)
+            if (inner.ContainsKey(motion))
+                return true;
+        return false;
+    }
+
     private Dictionary<uint, MotionData> Copy(IReadOnlyDictionary<uint, MotionData> source, string field)
     {
         var copy = new Dictionary<uint, MotionData>();

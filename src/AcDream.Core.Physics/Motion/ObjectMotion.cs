@@ -244,25 +244,9 @@ public sealed class ObjectMotion
 
     private void CheckCommand(uint motion, string field)
     {
-        if (motion is MotionCommand.WalkBackwards or MotionCommand.TurnLeft or MotionCommand.SideStepLeft)
+        if (motion is MotionCommand.WalkBackwards or MotionCommand.TurnLeft or MotionCommand.SideStepLeft || Table.Knows(motion))
             return;
-        uint id = motion & MotionCommandMask.Command;
-        if ((motion & MotionCommandMask.Style) != 0 && Table.StyleDefaults.ContainsKey(motion))
-            return;
-        foreach (uint style in Table.StyleDefaults.Keys)
-            if (Table.Cycles.ContainsKey(MotionTable.CycleKey(style, id)) || Table.Modifiers.ContainsKey(MotionTable.CycleKey(style, id)))
-                return;
-        if (Table.Modifiers.ContainsKey(id) || (motion & 0xFF000000) != 0 && HasLinkTo(motion))
-            return;
-        throw new ArgumentException($"{field}: command 0x{motion:X8} is not in motion table 0x{Table.Id:X8} (no cycle, modifier or link for it) and is not one the interpreter maps.", field);
-    }
-
-    private bool HasLinkTo(uint motion)
-    {
-        foreach (uint key in Table.LinkKeys)
-            if (Table.LinksFrom(key)!.ContainsKey(motion))
-                return true;
-        return false;
+        throw new ArgumentException($"{field}: command 0x{motion:X8} is not in motion table 0x{Table.Id:X8} (no style, cycle, modifier or link for it) and is not one the interpreter maps.", field);
     }
 
     private static void CheckParameters(in MotionParameters p)
