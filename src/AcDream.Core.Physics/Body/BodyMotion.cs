@@ -35,7 +35,7 @@ internal static class BodyMotion
         PhysicsState physicsState, float friction)
     {
         var offset = Vector3.Zero;
-        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction))
+        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction, retailRounding: false))
             offset = velocity * quantum + acceleration * (0.5f * quantum * quantum);
         velocity += acceleration * quantum;
         return offset;
@@ -52,7 +52,7 @@ internal static class BodyMotion
         PhysicsState physicsState, float friction)
     {
         double q = quantum;
-        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction))
+        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction, retailRounding: true))
         {
             var v = velocity;
             var a = acceleration;
@@ -74,7 +74,8 @@ internal static class BodyMotion
 
     // The part of UpdatePhysicsInternal before the displacement: the cap, friction and the small-speed cut; false
     // when the body is at rest (no displacement this quantum).
-    private static bool PrepareVelocity(ref Vector3 velocity, float quantum, in MoverState state, PhysicsState physicsState, float friction)
+    private static bool PrepareVelocity(ref Vector3 velocity, float quantum, in MoverState state, PhysicsState physicsState, float friction,
+        bool retailRounding)
     {
         float mag2 = velocity.LengthSquared();
         if (!(mag2 > 0f))
@@ -84,7 +85,7 @@ internal static class BodyMotion
             velocity = Vector3.Normalize(velocity) * PhysicsConstants.MaxVelocity;
             mag2 = PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity;
         }
-        ApplyFriction(ref velocity, quantum, mag2, state, physicsState, friction);
+        ApplyFriction(ref velocity, quantum, mag2, state, physicsState, friction, retailRounding);
         // Retail quirk: the small-speed test uses |v|² from before friction (CPhysicsObj.c:2192).
         if (mag2 - PhysicsConstants.SmallVelocity * PhysicsConstants.SmallVelocity < PhysicsConstants.Epsilon)
             velocity = Vector3.Zero;
@@ -98,8 +99,18 @@ internal static class BodyMotion
     /// uses friction 1 below 1.25 m/s and <see cref="PhysicsConstants.SleddingFriction"/> from 2.5 m/s on a
     /// slope steeper than 10°. (ACE reads the sledding slope test the other way round; retail is followed.)
     /// </summary>
+    /// <param name="velocity">The velocity, changed in place.</param>
+    /// <param name="quantum">The quantum, seconds.</param>
+    /// <param name="velocityMag2">|v|² before friction (for the sledding speeds).</param>
+    /// <param name="state">The contact state.</param>
+    /// <param name="physicsState">The PhysicsState (Sledding).</param>
+    /// <param name="friction">The body's friction.</param>
+    /// <param name="retailRounding">
+    /// Retail multiplies each component by the double (1 − friction)^quantum and rounds once (CPhysicsObj.c:533-590,
+    /// x87 at 53 bits); false rounds the factor to float first (the desired-velocity step's arithmetic, as ACE).
+    /// </param>
     public static void ApplyFriction(ref Vector3 velocity, float quantum, float velocityMag2, in MoverState state,
-        PhysicsState physicsState, float friction)
+        PhysicsState physicsState, float friction, bool retailRounding = false)
     {
         if (!state.OnWalkable)
             return;
@@ -116,7 +127,11 @@ internal static class BodyMotion
             else if (velocityMag2 >= PhysicsConstants.SleddingFastSpeedSquared && normal.Z < PhysicsConstants.SleddingLevelZ)
                 f = PhysicsConstants.SleddingFriction;
         }
-        velocity *= (float)Math.Pow(1.0 - f, quantum);
+        double factor = Math.Pow(1.0 - f, quantum);
+        if (retailRounding)
+            velocity = new Vector3((float)(velocity.X * factor), (float)(velocity.Y * factor), (float)(velocity.Z * factor));
+        else
+            velocity *= (float)factor;
     }
 
     /// <summary>

@@ -386,9 +386,14 @@ internal sealed class MotionInterpreter
             v.Y = WalkAnimSpeed * Interpreted.ForwardSpeed;
         else if (Interpreted.ForwardCommand == MotionCommand.RunForward)
             v.Y = RunAnimSpeed * Interpreted.ForwardSpeed;
-        float max = RunAnimSpeed * RunRate();
-        if (v.Length() > max)
-            v = Vector3.Normalize(v) * max;
+        // The clamp in retail's arithmetic: the length in double, each component (float)(1/len × c × max).
+        double max = RunAnimSpeed * RunRate();
+        double length = Math.Sqrt((double)v.X * v.X + (double)v.Y * v.Y + (double)v.Z * v.Z);
+        if (length > max)
+        {
+            double inv = 1.0 / length;
+            v = new Vector3((float)(inv * v.X * max), (float)(inv * v.Y * max), (float)(inv * v.Z * max));
+        }
         return v;
     }
 
@@ -427,8 +432,9 @@ internal sealed class MotionInterpreter
     {
         if (_skills is not null && !_skills.CanJump(JumpExtent))
             return MotionError.CantJumpLoadedDown;
+        // Retail tests Fallen and Crouch..Sleeping (CMotionInterp.c:569-604); ACE tests Falling and stops before Sleeping.
         uint forward = Interpreted.ForwardCommand;
-        if (forward == MotionCommand.Falling || forward >= MotionCommand.Crouch && forward < MotionCommand.Sleeping)
+        if (forward == MotionCommand.Fallen || forward >= MotionCommand.Crouch && forward <= MotionCommand.Sleeping)
             return MotionError.CantJumpFromThisPosition;
         if (Body.Contact && Body.OnWalkable && forward == MotionCommand.Ready && Interpreted.SideStepCommand == 0 && Interpreted.TurnCommand == 0)
             StandingLongJump = true;
@@ -454,7 +460,8 @@ internal sealed class MotionInterpreter
     {
         if (Body.Gravity && !(Body.Contact && Body.OnWalkable))
             return MotionError.CantJumpWhileInTheAir;
-        if (_pendingCount > 1 && _pending[0].JumpError != MotionError.None)
+        // Retail reads the queue's head whenever there is one (CMotionInterp.c:646-697; ACE only with two or more).
+        if (_pendingCount > 0 && _pending[0].JumpError != MotionError.None)
             return _pending[0].JumpError;
         var error = JumpChargeIsAllowed();
         if (error == MotionError.None)
@@ -476,7 +483,10 @@ internal sealed class MotionInterpreter
         return MotionError.None;
     }
 
-    /// <summary>CMotionInterp::motion_allows_jump: reloading, picking up, the power-ups, crouch to sleep, aiming to praying, and Falling forbid it.</summary>
+    /// <summary>
+    /// CMotionInterp::motion_allows_jump (CMotionInterp.c:19-40): reloading to picking up, the power-ups, crouch to
+    /// sleep, aiming to praying, and Fallen forbid a jump (ACE lists Falling in Fallen's place).
+    /// </summary>
     public static MotionError MotionAllowsJump(uint substate)
     {
         bool forbidden = substate is >= 0x40000016 and <= 0x40000018 // Reload .. Pickup
@@ -484,7 +494,7 @@ internal sealed class MotionInterpreter
             || substate is >= 0x1000006F and <= 0x10000078 // MagicPowerUp01 .. MagicPowerUp10
             || substate is >= MotionCommand.Crouch and <= MotionCommand.Sleeping
             || substate is >= 0x4000001E and <= 0x40000039 // AimLevel .. MagicPray
-            || substate == MotionCommand.Falling;
+            || substate == MotionCommand.Fallen;
         return forbidden ? MotionError.CantJumpFromThisPosition : MotionError.None;
     }
 

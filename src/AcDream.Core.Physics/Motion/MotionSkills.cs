@@ -22,7 +22,7 @@ public interface IMotionSkills
 /// <summary>
 /// Retail's run and jump formulas from the Run and Jump skills and the burden (see docs/architecture.md,
 /// "The motion layer"; the constants are the client's, as the reference notes give them):
-/// run rate = (burdenMod × Run/(Run + 200) × 11 + 4) / scale / 4, and 4.5 from a Run skill of 800;
+/// run rate = (burdenMod × Run/(Run + 200) × 11 + 4) / scale / 4, and 4.5 at a Run skill of exactly 800;
 /// jump height = burdenMod × (Jump/(Jump + 1300) × 22.2 + 0.05) × extent / scale, at least 0.35 m, the
 /// vertical speed √(19.6 × height); burdenMod = 1 below burden 1, 2 − burden up to 2, then 0.
 /// </summary>
@@ -62,24 +62,33 @@ public sealed class RetailSkills : IMotionSkills
     /// <summary>The burden's factor: 1 below 1, 2 − burden below 2, else 0.</summary>
     public static float BurdenMod(float burden) => burden < 1f ? 1f : burden < 2f ? 2f - burden : 0f;
 
-    /// <summary>The run rate at a Run skill and burden.</summary>
+    /// <summary>
+    /// The run rate at a Run skill and burden (MovementSystem::GetRunRate, gameplay_misc/MovementSystem.c:19-32, in
+    /// double, stored to float). Retail quirk: only a skill of exactly 800 gives 4.5; above it the formula applies
+    /// again (4.5 is its value at 1600 only in the limit; ACE returns 4.5 from 800 up).
+    /// </summary>
     public static float RunRate(int runSkill, float burden, float scale = 1f)
     {
-        if (runSkill >= 800)
-            return 18f / 4f;
-        return (BurdenMod(burden) * ((float)runSkill / (runSkill + 200) * 11f) + 4f) / scale / 4f;
+        if (runSkill == 800)
+            return 4.5f;
+        return (float)((BurdenMod(burden) * ((double)runSkill / (runSkill + 200) * 11.0) + 4.0) / scale / 4.0);
     }
 
     /// <summary>The jump height at a Jump skill, extent (clamped to 0..1) and burden, m: at least 0.35.</summary>
-    public static float JumpHeight(int jumpSkill, float extent, float burden, float scale = 1f)
+    public static float JumpHeight(int jumpSkill, float extent, float burden, float scale = 1f) => (float)JumpHeightExact(jumpSkill, extent, burden, scale);
+
+    // MovementSystem::GetJumpHeight (MovementSystem.c:35-56): in double with the float constants 22.2 and 0.05,
+    // the 0.35 floor applied last; InqJumpVelocity takes the square root of the unrounded height.
+    private static double JumpHeightExact(int jumpSkill, float extent, float burden, float scale)
     {
         extent = Math.Clamp(extent, 0f, 1f);
-        float height = BurdenMod(burden) * (jumpSkill / (jumpSkill + 1300f) * 22.2f + 0.05f) * extent / scale;
+        float s = jumpSkill;
+        double height = BurdenMod(burden) * (s / (s + 1300.0) * 22.2f + 0.05f) * extent / scale;
         return height < 0.35f ? 0.35f : height;
     }
 
     /// <summary>The vertical speed that reaches a height under retail gravity: √(19.6 × height), m/s.</summary>
-    public static float JumpVelocity(float height) => (float)Math.Sqrt(19.6f * height);
+    public static float JumpVelocity(float height) => (float)Math.Sqrt(height * 19.6);
 
     /// <inheritdoc/>
     public bool TryRunRate(out float rate)
@@ -91,7 +100,7 @@ public sealed class RetailSkills : IMotionSkills
     /// <inheritdoc/>
     public bool TryJumpVelocity(float extent, out float velocity)
     {
-        velocity = JumpVelocity(JumpHeight(JumpSkill, extent, Burden, Scale));
+        velocity = (float)Math.Sqrt(JumpHeightExact(JumpSkill, extent, Burden, Scale) * 19.6);
         return true;
     }
 

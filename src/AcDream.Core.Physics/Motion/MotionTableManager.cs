@@ -132,6 +132,7 @@ internal sealed class MotionTableManager
 
     // MotionTableManager::remove_redundant_links: a motion queued again while its earlier entry's links are still
     // waiting drops the links queued since then.
+    // Retail looks only at the newest entry with animations (CMTableManager.c:325-393); ACE goes on to older ones.
     private void RemoveRedundantLinks()
     {
         for (int i = _pendingCount - 1; i >= 0; i--)
@@ -141,15 +142,14 @@ internal sealed class MotionTableManager
                 continue;
             if ((entry.Motion & MotionCommandMask.Substate) == 0 || (entry.Motion & MotionCommandMask.Modifier) != 0)
             {
-                if ((entry.Motion & MotionCommandMask.Style) == 0)
-                    return;
-                if (RemoveRedundantLinksBefore(i, styleEntry: true))
-                    return;
+                if ((entry.Motion & MotionCommandMask.Style) != 0)
+                    RemoveRedundantLinksBefore(i, styleEntry: true);
             }
-            else if (RemoveRedundantLinksBefore(i, styleEntry: false))
+            else
             {
-                return;
+                RemoveRedundantLinksBefore(i, styleEntry: false);
             }
+            return;
         }
     }
 
@@ -224,9 +224,11 @@ internal sealed class MotionTableManager
             MotionData? leave = null;
             if (styleDefault != state.Substate)
                 leave = GetLink(state.Style, state.Substate, state.SubstateMod, styleDefault, speed);
-            if (styleDefault != 0)
+            // The new style's default substate (CMTable.c:515-576; ACE keys the cycle by the old style's default).
+            uint newDefault = StyleDefault(motion);
+            if (newDefault != 0)
             {
-                var cycle = _table.Cycle(MotionTable.CycleKey(motion, styleDefault));
+                var cycle = _table.Cycle(MotionTable.CycleKey(motion, newDefault));
                 if (cycle is not null)
                 {
                     if ((cycle.Bitfield & 1) != 0)
@@ -244,7 +246,7 @@ internal sealed class MotionTableManager
                     AddMotion(link, speed);
                     AddMotion(enter, speed);
                     AddMotion(cycle, speed);
-                    state.Substate = styleDefault;
+                    state.Substate = newDefault;
                     state.Style = motion;
                     state.SubstateMod = speed;
                     ReModify();
@@ -260,7 +262,7 @@ internal sealed class MotionTableManager
             var cycle = _table.Cycle(MotionTable.CycleKey(state.Style, id)) ?? _table.Cycle(MotionTable.CycleKey(_table.DefaultStyle, id));
             if (cycle is not null && IsAllowed(motion, cycle))
             {
-                if (motion == state.Substate && _sequence.HasAnims && MathF.Sign(speed) == MathF.Sign(state.SubstateMod))
+                if (motion == state.Substate && _sequence.HasAnims && SameSign(speed, state.SubstateMod))
                 {
                     // The same cycle at a new speed: retime it and swap its physics.
                     ChangeCycleSpeed(state.SubstateMod, speed);
@@ -273,7 +275,7 @@ internal sealed class MotionTableManager
                     state.ClearModifiers();
                 var link = GetLink(state.Style, state.Substate, state.SubstateMod, motion, speed);
                 MotionData? enter = null;
-                if (link is null || MathF.Sign(speed) != MathF.Sign(state.SubstateMod))
+                if (link is null || !SameSign(speed, state.SubstateMod))
                 {
                     // Through the style's default substate: out of the current cycle, then into the new one.
                     link = GetLink(state.Style, state.Substate, state.SubstateMod, styleDefault, 1f);
@@ -335,8 +337,7 @@ internal sealed class MotionTableManager
                         AddMotion(back, 1f);
                         AddMotion(cycle, state.SubstateMod);
                         ReModify();
-                        // Retail counts the first link's animations where the way back's belong.
-                        count = (uint)(AnimCount(toDefault) + AnimCount(link) + (back is null ? 0 : AnimCount(toDefault)));
+                        count = (uint)(AnimCount(toDefault) + AnimCount(link) + AnimCount(back)); // ACE counts toDefault's twice
                         return true;
                     }
                 }
@@ -468,6 +469,9 @@ internal sealed class MotionTableManager
     private void CombineMotion(MotionData data, float speed) => _sequence.CombinePhysics(data.Velocity * speed, data.Omega * speed);
 
     private void SubtractMotion(MotionData data, float speed) => _sequence.SubtractPhysics(data.Velocity * speed, data.Omega * speed);
+
+    // CMTable.c:66-84 same_sign: zero counts as positive (ACE's Math.Sign gives zero a sign of its own).
+    private static bool SameSign(float a, float b) => a >= 0f == b >= 0f;
 
     private static int AnimCount(MotionData? data) => data is null ? 0 : data.Anims.Length;
 }

@@ -323,13 +323,12 @@ internal sealed class Sequence
         offset = offset.Combine(new Frame(root.Origin, root.Orientation));
     }
 
-    // AFrame::subtract: the root offset's move (in its own rotation) taken away, then its turn undone.
+    // Frame::subtract1 (CFrame.c:357321): the frame's turn undone, then its move taken away through the resulting rotation.
     private static void SubtractRootFrame(ref Frame offset, Animation animation, int frame)
     {
         if (!animation.HasRootFrames || (uint)frame >= (uint)animation.RootFrameCount)
             return;
         ref readonly var root = ref animation.RootFrame(frame);
-        offset.Origin -= Vector3.Transform(root.Origin, root.Orientation);
-        offset.Orientation = Quaternion.Normalize(offset.Orientation * Quaternion.Inverse(root.Orientation));
+        offset = offset.Subtract(new Frame(root.Origin, root.Orientation));
     }
 }

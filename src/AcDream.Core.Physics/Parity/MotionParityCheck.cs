@@ -15,6 +15,25 @@ namespace AcDream.Core.Physics.Parity;
 /// </summary>
 internal static class MotionParityCheck
 {
+    /// <summary>
+    /// A place where ACE's motion layer departs from the decompile and a recording shows it: from
+    /// <see cref="FromFrame"/> on, that file's positions are compared within <see cref="Bound"/> instead of the
+    /// tolerance, and the report names it. Each is listed in docs/open-questions.md with the decompile line.
+    /// </summary>
+    internal readonly record struct AceDeparture(string Name, string File, int FromFrame, double Bound, string Source);
+
+    /// <summary>The named departures (one so far).</summary>
+    internal static readonly AceDeparture[] Departures =
+    [
+        // Walking backwards plays the walk cycle in reverse, taking each frame's root offset away. Retail's
+        // Frame::subtract1 rotates the removed offset by the resulting rotation (the exact inverse of combine); ACE's
+        // AFrame.Subtract rotates it by the root frame's own. The walk cycle's frames 1 and 5 turn by ±0.01 rad with a
+        // 3.6 mm offset: each reverse crossing of them moves retail 7.2e-5 m from ACE; the first is at frame 9 and the
+        // three backward cycles add up to 3.7e-4 m (docs/open-questions.md).
+        new("reverse-root-frame-subtraction", "backwards.json.gz", 9, 4e-4,
+            "Frame::subtract1, CFrame.c (acclient.c:357321); ACE Animation/AFrame.cs Subtract"),
+    ];
+
     public static ParityReport Check(MotionParityFile file)
     {
         var engine = new PhysicsEngine(file.World);
@@ -22,7 +41,11 @@ internal static class MotionParityCheck
         var state = file.Start;
         var body = file.StartBody;
         motion.Place(file.Mover, state, ref body);
-        int frames = 0, within = 0, identical = 0, mismatches = 0;
+        int frames = 0, within = 0, identical = 0, mismatches = 0, departed = 0;
+        AceDeparture? departure = null;
+        foreach (var d in Departures)
+            if (d.File == file.Name)
+                departure = d;
         double maxDifference = 0;
         string? firstFailure = null;
         for (int f = 0; f < file.Frames.Length; f++)
@@ -46,16 +69,25 @@ internal static class MotionParityCheck
             if (VectorMath.SameBits(position, expected.Position)) identical++;
             string? flag = callFailure ?? FlagDifference(expected, state, step.Quanta > 0, motion.Interpreted);
             if (flag is not null) mismatches++;
+            double bound = ParityCheck.Tolerance;
+            if (departure is { } dep && f >= dep.FromFrame)
+            {
+                bound = dep.Bound;
+                departed++;
+            }
             if (firstFailure is null)
             {
                 if (flag is not null)
                     firstFailure = $"{file.Name}: frame {f}: {flag}";
-                else if (!(difference <= ParityCheck.Tolerance))
-                    firstFailure = string.Format(CultureInfo.InvariantCulture, "{0}: frame {1}: position: expected {2}, actual {3} (difference {4:0.###e0} m)",
-                        file.Name, f, expected.Position, position, difference);
+                else if (!(difference <= bound))
+                    firstFailure = string.Format(CultureInfo.InvariantCulture, "{0}: frame {1}: position: expected {2}, actual {3} (difference {4:0.###e0} m, bound {5:0e0} m)",
+                        file.Name, f, expected.Position, position, difference, bound);
             }
         }
-        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure);
+        string? note = departure is { } named
+            ? string.Format(CultureInfo.InvariantCulture, "{0} frames within {1:0e0} m under ACE departure {2} ({3})", departed, named.Bound, named.Name, named.Source)
+            : null;
+        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note);
     }
 
     private static string Apply(ObjectMotion motion, in MotionCall call, MoverDescription mover, ref MoverState state, ref Body.BodyState body)

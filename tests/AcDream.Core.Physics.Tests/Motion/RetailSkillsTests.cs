@@ -22,6 +22,7 @@ public class RetailSkillsTests
     [InlineData(800, 0f, 4.5)]             // the cap: 18/4 whatever the burden
     [InlineData(800, 1.5f, 4.5)]
     [InlineData(800, 2f, 4.5)]
+    [InlineData(801, 0f, 3.2005495)]       // retail quirk: only exactly 800 is capped (MovementSystem.c:19-32); (801/1001·11 + 4)/4
     public void RunRate_FollowsTheRunSkillAndBurden(int run, float burden, double expected) =>
         Assert.Equal(expected, RetailSkills.RunRate(run, burden), 5);
 
