@@ -97,6 +97,26 @@ public struct Frame
     }
 
     /// <summary>
+    /// Takes a child frame back off (retail Frame::subtract1, CFrame.c:357321, the exact inverse of
+    /// <see cref="Combine"/>): the rotation this × child⁻¹ in retail's order, normalized as set_rotate does,
+    /// then the child's origin rotated by that new rotation and taken away. (ACE's AFrame.Subtract rotates the
+    /// child's origin by the child's own rotation instead.)
+    /// </summary>
+    internal readonly Frame Subtract(in Frame child)
+    {
+        double w1 = Qw, x1 = _qx, y1 = _qy, z1 = _qz;
+        double w2 = child.Qw, x2 = child._qx, y2 = child._qy, z2 = child._qz;
+        float qz = (float)(z1 * w2 - (w1 * z2 + y2 * x1) + y1 * x2);
+        float qy = (float)(y1 * w2 - w1 * y2 + z2 * x1 - x2 * z1);
+        float qx = (float)(x1 * w2 - x2 * w1 - y1 * z2 + z1 * y2);
+        float qw = (float)(y1 * y2 + x2 * x1 + w1 * w2 + z2 * z1);
+        var result = new Frame(Origin, Orientation);
+        result.SetRotate(qw, qx, qy, qz);
+        result.Origin = result.Matrix.FrameToGlobal(-child.Origin, Origin);
+        return result;
+    }
+
+    /// <summary>
     /// Sets the orientation between two frames' orientations at <paramref name="t"/> (retail
     /// Frame::interpolate_rotation, acclient.c:357257): spherical, falling back to the linear blend when
     /// the two are within EPSILON or the spherical weights leave [0, 1]; normalized as set_rotate does.

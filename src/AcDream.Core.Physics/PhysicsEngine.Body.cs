@@ -21,6 +21,9 @@ public sealed partial class PhysicsEngine
     /// standing on walkable ground does not run off a drop deeper than its step-down height: it slides along
     /// the edge or stops at it, as in <see cref="Resolve"/>; without the flag it leaves the ground there and
     /// falls (<see cref="MoverDescription.With"/> makes the copy without it).
+    /// Not retail: the desired velocity stands for the animation's root motion, which retail applies per
+    /// animation frame from the object's motion table; a player or creature with a motion table steps with
+    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, Motion.ObjectMotion, double)"/> instead.
     /// </summary>
     /// <param name="mover">What the mover is (its PhysicsState decides Gravity, EdgeSlide, Sledding, Inelastic, Hidden, Frozen).</param>
     /// <param name="state">Where it is and how it stands.</param>
@@ -63,7 +66,47 @@ public sealed partial class PhysicsEngine
         }
         // Retail recomputes the acceleration whenever the contact state or the Gravity state changes.
         b.Acceleration = BodyMotion.Acceleration(ps, s.Contact, s.OnWalkable);
+        return Advance(mover, s, b, elapsed, desiredVelocity, null, jumped);
+    }
 
+    /// <summary>
+    /// Advances a player or creature by <paramref name="elapsed"/> seconds the retail way, moved by its motion
+    /// layer (CPhysicsObj::update_object with its CPartArray and CMotionInterp): the quanta as in the other
+    /// <c>Step</c>; each quantum the sequence advances (CSequence::update) and its authored offset (the frames'
+    /// root offsets plus the motions' velocity and omega per frame crossed, body axes) moves and turns the body
+    /// while it stands on walkable ground (only the turn counts off it: UpdatePositionInternal scales the origin
+    /// by 0), then the physics velocity and gravity are added (UpdatePhysicsInternal, in retail's rounding),
+    /// through the same transition as <see cref="Resolve"/>. Leaving walkable ground sets the velocity to
+    /// get_leave_ground_velocity (CMotionInterp::LeaveGround); landing re-applies the held movement
+    /// (CMotionInterp::HitGround) and keeps the velocity, which ground friction then decays. The same call
+    /// steps a creature on a server and the player on a client.
+    /// </summary>
+    /// <param name="mover">What the mover is.</param>
+    /// <param name="state">Where it is and how it stands.</param>
+    /// <param name="body">Its velocity, spin, friction, elasticity and carried time.</param>
+    /// <param name="motion">Its motion layer (commands are given to it between steps).</param>
+    /// <param name="elapsed">Seconds since the last call, zero or more.</param>
+    /// <exception cref="ArgumentException">A non-finite, negative or out-of-range argument, named in the message; nothing is changed.</exception>
+    public BodyStepResult Step(MoverDescription mover, in MoverState state, in BodyState body, Motion.ObjectMotion motion, double elapsed)
+    {
+        ArgumentNullException.ThrowIfNull(mover);
+        ArgumentNullException.ThrowIfNull(motion);
+        var begin = state.Position;
+        Guard.Pose(ref begin.Frame, "state.position");
+        ValidateState(mover, state, begin, begin.CellId);
+        BodyGuard.Check(body, elapsed, Vector3.Zero, 0f);
+        var s = state;
+        var b = body;
+        b.Acceleration = BodyMotion.Acceleration(mover.PhysicsState, s.Contact, s.OnWalkable);
+        motion.Load(mover, s, b);
+        return Advance(mover, s, b, elapsed, Vector3.Zero, motion, false);
+    }
+
+    // CPhysicsObj::update_object's quantum loop, shared by both steps.
+    private BodyStepResult Advance(MoverDescription mover, MoverState s, BodyState b, double elapsed, Vector3 desiredVelocity,
+        Motion.ObjectMotion? motion, bool jumped)
+    {
+        var ps = mover.PhysicsState;
         _stepCollided.Clear();
         _acceptedTransitions = 0;
         var last = new QuantumOutcome();
@@ -88,7 +131,7 @@ public sealed partial class PhysicsEngine
         if (pending <= PhysicsConstants.MaxQuantum)
         {
             b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
-            Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
+            Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, motion, ref last);
             quanta = 1;
             pending = 0;
         }
@@ -97,7 +140,7 @@ public sealed partial class PhysicsEngine
             do
             {
                 b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
-                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, ref last);
+                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, motion, ref last);
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
             }
@@ -105,7 +148,7 @@ public sealed partial class PhysicsEngine
             if (pending > PhysicsConstants.MinQuantum)
             {
                 b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
-                Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, ref last);
+                Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, motion, ref last);
                 quanta++;
                 pending = 0;
             }
@@ -129,12 +172,36 @@ public sealed partial class PhysicsEngine
 
     /// <summary>One quantum: retail UpdateObjectInternal → UpdatePositionInternal → transition → SetPositionInternal.</summary>
     private void Quantum(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
-        ref QuantumOutcome outcome)
+        Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
+    {
+        QuantumCore(mover, ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
+        // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
+        motion?.HandleMovement();
+    }
+
+    private void QuantumCore(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
+        Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
     {
         var ps = mover.PhysicsState;
         var begin = s.Position;
         var frame = begin.Frame;
-        if ((ps & PhysicsState.Hidden) == 0)
+        if ((ps & PhysicsState.Hidden) == 0 && motion is not null)
+        {
+            // UpdatePositionInternal (CPhysicsObj.c:4431): the sequence's offset (body axes), its origin scaled by the
+            // object's scale on walkable ground and by 0 off it (the turn is kept), combined onto the position; then
+            // the physics displacement (UpdatePhysicsInternal) and the physics omega, in world axes.
+            var offset = Frame.Identity;
+            motion.Advance(quantum, ref offset);
+            float scale = s.OnWalkable ? mover.Scale : 0f;
+            offset.Origin = new Vector3((float)(offset.Origin.X * (double)scale), (float)(offset.Origin.Y * (double)scale),
+                (float)(offset.Origin.Z * (double)scale));
+            frame = begin.Frame.Combine(offset);
+            var velocity = b.Velocity;
+            BodyMotion.IntegrateInto(ref frame.Origin, ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
+            b.Velocity = velocity;
+            frame.Orientation = BodyMotion.Rotate(frame.Orientation, b.Omega * quantum);
+        }
+        else if ((ps & PhysicsState.Hidden) == 0)
         {
             // UpdatePositionInternal: the animation's root motion counts only on walkable ground (scaled by 0 off it).
             var offset = s.OnWalkable ? desiredVelocity * quantum : Vector3.Zero;
@@ -186,7 +253,9 @@ public sealed partial class PhysicsEngine
         var v = b.Velocity;
         if (result.VelocityKilled)
             v = Vector3.Zero; // OBJECTINFO::kill_velocity, called inside the transition
-        if (prevOnWalkable && !next.OnWalkable && b.MotionInterpreter && (ps & PhysicsState.Gravity) != 0)
+        if (motion is not null)
+            v = motion.SetOnWalkable(next.OnWalkable, next.Position.Frame.Orientation, next.Contact, v); // set_on_walkable: LeaveGround / HitGround
+        else if (prevOnWalkable && !next.OnWalkable && b.MotionInterpreter && (ps & PhysicsState.Gravity) != 0)
             v = BodyMotion.LeaveGroundVelocity(v, desiredVelocity, 0f); // MovementManager::LeaveGround
         b.Acceleration = BodyMotion.Acceleration(ps, next.Contact, next.OnWalkable);
         if (BodyMotion.StopsSpin(ps, next.Contact, next.OnWalkable))

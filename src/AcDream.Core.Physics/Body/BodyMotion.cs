@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics.Body;
 /// <summary>
 /// Retail's per-quantum body arithmetic (CPhysicsObj, acclient-src PORTAL/cphysobj/CPhysicsObj.c):
 /// acceleration, friction, integration, the collision response and the leave-ground velocity. Pure
-/// functions of their arguments; <see cref="PhysicsEngine.Step"/> strings them together.
+/// functions of their arguments; <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/> strings them together.
 /// </summary>
 internal static class BodyMotion
 {
@@ -35,22 +35,61 @@ internal static class BodyMotion
         PhysicsState physicsState, float friction)
     {
         var offset = Vector3.Zero;
-        float mag2 = velocity.LengthSquared();
-        if (mag2 > 0f)
-        {
-            if (mag2 > PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity)
-            {
-                velocity = Vector3.Normalize(velocity) * PhysicsConstants.MaxVelocity;
-                mag2 = PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity;
-            }
-            ApplyFriction(ref velocity, quantum, mag2, state, physicsState, friction);
-            // Retail quirk: the small-speed test uses |v|² from before friction (CPhysicsObj.c:2192).
-            if (mag2 - PhysicsConstants.SmallVelocity * PhysicsConstants.SmallVelocity < PhysicsConstants.Epsilon)
-                velocity = Vector3.Zero;
+        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction, retailRounding: false))
             offset = velocity * quantum + acceleration * (0.5f * quantum * quantum);
-        }
         velocity += acceleration * quantum;
         return offset;
+    }
+
+    /// <summary>
+    /// UpdatePhysicsInternal as retail rounds it (CPhysicsObj.c:2143-2227; its x87 code runs at 53 bits): the same
+    /// steps as <see cref="Integrate"/>, but the displacement v·q + ½·a·q² is computed in double per axis with
+    /// retail's float stores and added to <paramref name="origin"/> directly (after the animation's offset, as
+    /// UpdatePositionInternal orders them), and the velocity advanced as v + q·a per axis. The motion-layer
+    /// body step uses it; the desired-velocity step keeps <see cref="Integrate"/>'s float arithmetic.
+    /// </summary>
+    public static void IntegrateInto(ref Vector3 origin, ref Vector3 velocity, Vector3 acceleration, float quantum, in MoverState state,
+        PhysicsState physicsState, float friction)
+    {
+        double q = quantum;
+        if (PrepareVelocity(ref velocity, quantum, state, physicsState, friction, retailRounding: true))
+        {
+            var v = velocity;
+            var a = acceleration;
+            float tx = (float)(a.X * 0.5 * q);
+            tx = (float)(tx * q);
+            float dx = (float)(q * v.X + tx);
+            origin.X = (float)(dx + origin.X);
+            float ty = (float)(a.Y * 0.5 * q * q);
+            origin.Y = (float)(q * v.Y + ty + origin.Y);
+            float hz = (float)(a.Z * 0.5);
+            float pz = (float)(q * v.Z);
+            float dz = (float)(pz + hz * q * q);
+            origin.Z = (float)(dz + origin.Z);
+        }
+        velocity.X = (float)(q * acceleration.X + velocity.X);
+        velocity.Y = (float)(q * acceleration.Y + velocity.Y);
+        velocity.Z = (float)((float)(q * acceleration.Z) + velocity.Z);
+    }
+
+    // The part of UpdatePhysicsInternal before the displacement: the cap, friction and the small-speed cut; false
+    // when the body is at rest (no displacement this quantum).
+    private static bool PrepareVelocity(ref Vector3 velocity, float quantum, in MoverState state, PhysicsState physicsState, float friction,
+        bool retailRounding)
+    {
+        float mag2 = velocity.LengthSquared();
+        if (!(mag2 > 0f))
+            return false;
+        if (mag2 > PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity)
+        {
+            velocity = Vector3.Normalize(velocity) * PhysicsConstants.MaxVelocity;
+            mag2 = PhysicsConstants.MaxVelocity * PhysicsConstants.MaxVelocity;
+        }
+        ApplyFriction(ref velocity, quantum, mag2, state, physicsState, friction, retailRounding);
+        // Retail quirk: the small-speed test uses |v|² from before friction (CPhysicsObj.c:2192).
+        if (mag2 - PhysicsConstants.SmallVelocity * PhysicsConstants.SmallVelocity < PhysicsConstants.Epsilon)
+            velocity = Vector3.Zero;
+        return true;
     }
 
     /// <summary>
@@ -60,8 +99,18 @@ internal static class BodyMotion
     /// uses friction 1 below 1.25 m/s and <see cref="PhysicsConstants.SleddingFriction"/> from 2.5 m/s on a
     /// slope steeper than 10°. (ACE reads the sledding slope test the other way round; retail is followed.)
     /// </summary>
+    /// <param name="velocity">The velocity, changed in place.</param>
+    /// <param name="quantum">The quantum, seconds.</param>
+    /// <param name="velocityMag2">|v|² before friction (for the sledding speeds).</param>
+    /// <param name="state">The contact state.</param>
+    /// <param name="physicsState">The PhysicsState (Sledding).</param>
+    /// <param name="friction">The body's friction.</param>
+    /// <param name="retailRounding">
+    /// Retail multiplies each component by the double (1 − friction)^quantum and rounds once (CPhysicsObj.c:533-590,
+    /// x87 at 53 bits); false rounds the factor to float first (the desired-velocity step's arithmetic, as ACE).
+    /// </param>
     public static void ApplyFriction(ref Vector3 velocity, float quantum, float velocityMag2, in MoverState state,
-        PhysicsState physicsState, float friction)
+        PhysicsState physicsState, float friction, bool retailRounding = false)
     {
         if (!state.OnWalkable)
             return;
@@ -78,7 +127,11 @@ internal static class BodyMotion
             else if (velocityMag2 >= PhysicsConstants.SleddingFastSpeedSquared && normal.Z < PhysicsConstants.SleddingLevelZ)
                 f = PhysicsConstants.SleddingFriction;
         }
-        velocity *= (float)Geometry.PortableMath.Pow(1.0 - f, quantum);
+        double factor = Geometry.PortableMath.Pow(1.0 - f, quantum);
+        if (retailRounding)
+            velocity = new Vector3((float)(velocity.X * factor), (float)(velocity.Y * factor), (float)(velocity.Z * factor));
+        else
+            velocity *= (float)factor;
     }
 
     /// <summary>

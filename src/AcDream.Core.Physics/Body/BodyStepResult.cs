@@ -2,7 +2,7 @@ using System;
 
 namespace AcDream.Core.Physics.Body;
 
-/// <summary>The outcome of one <see cref="PhysicsEngine.Step"/>: the move, the body's new state, and how many quanta ran.</summary>
+/// <summary>The outcome of one <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>: the move, the body's new state, and how many quanta ran.</summary>
 public readonly struct BodyStepResult
 {
     internal BodyStepResult(MoveResult move, BodyState body, int quanta, bool jumped)

@@ -25,8 +25,11 @@ public static class ParityCheck
     /// <param name="progress">Called after each run with the runs done and the total (for progress output).</param>
     /// <exception cref="Scenes.SceneFormatException">The file is malformed; the message names the JSON path.</exception>
     /// <exception cref="System.IO.IOException">The file cannot be read.</exception>
-    public static ParityReport CheckFile(string path, Action<int, int>? progress = null) =>
-        Check(ParityReader.ReadFile(path), progress);
+    public static ParityReport CheckFile(string path, Action<int, int>? progress = null)
+    {
+        var set = ParityReader.ReadFile(path);
+        return set.Motion is not null ? MotionParityCheck.Check(set.Motion) : Check(set, progress);
+    }
 
     /// <summary>
     /// Checks every <c>*.json.gz</c> in <paramref name="directory"/> (sorted by name): one line per file on

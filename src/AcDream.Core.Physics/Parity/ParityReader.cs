@@ -59,10 +59,15 @@ internal static class ParityReader
         var o = new JsonObj(root, string.Empty);
         string format = o.String("format");
         int version = o.Int("version", -1);
-        if (format is not (AceFormat or RealCellsFormat))
-            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}).");
+        if (format is not (AceFormat or RealCellsFormat or MotionParityReader.Format))
+            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}, {MotionParityReader.Format}).");
         if (version != 1)
             throw new SceneFormatException("version", $"unsupported {format} version {version} (this reader reads version 1).");
+        if (format == MotionParityReader.Format)
+        {
+            var motion = MotionParityReader.Read(root, name, directory);
+            return new ParitySet(name, motion.World, [], RequireBitIdentical: false, motion);
+        }
         return format == AceFormat
             ? ReadAce(o, name)
             : ReadReal(o, name, directory);

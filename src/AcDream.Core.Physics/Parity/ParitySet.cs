@@ -7,4 +7,6 @@ namespace AcDream.Core.Physics.Parity;
 /// <param name="World">The world every run walks through (alone).</param>
 /// <param name="Runs">The runs.</param>
 /// <param name="RequireBitIdentical">Every position must match to the last bit (the ACE door file); otherwise within <see cref="ParityCheck.Tolerance"/>.</param>
-internal sealed record ParitySet(string Name, PhysicsWorld World, IReadOnlyList<ParityRun> Runs, bool RequireBitIdentical);
+/// <param name="Motion">For a motion-layer file ("ace-motion-parity"), the file read; its runs are then empty.</param>
+internal sealed record ParitySet(string Name, PhysicsWorld World, IReadOnlyList<ParityRun> Runs, bool RequireBitIdentical,
+    MotionParityFile? Motion = null);

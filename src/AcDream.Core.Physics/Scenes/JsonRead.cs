@@ -246,6 +246,10 @@ internal static class JsonRead
         throw new SceneFormatException(path, $"expected an id (a hex string such as \"0x7000_0001\" or an integer), got {Kind(e)}.");
     }
 
+    /// <summary>An id written as hex text ("0x003D0003"), as in an object's keys.</summary>
+    public static uint Id(string text, string path) =>
+        TryHex(text, out uint h) ? h : throw new SceneFormatException(path, $"expected a hex id such as \"0x003D0003\", got \"{text}\".");
+
     private static bool TryHex(string s, out uint value)
     {
         value = 0;

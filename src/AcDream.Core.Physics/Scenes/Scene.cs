@@ -34,7 +34,7 @@ public sealed class Scene
 /// <summary>
 /// A mover of a scene: what it is, where it starts, and for every frame either its requested offset (moved by
 /// <see cref="PhysicsEngine.Resolve"/>) or, for a body mover, its elapsed time, desired motion and jump (moved
-/// by <see cref="PhysicsEngine.Step"/>).
+/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>).
 /// </summary>
 public sealed class SceneMover
 {
@@ -79,7 +79,7 @@ public sealed class SceneMover
         return $"{Path}.{(IsBody ? "steps" : "motion")}[{item}]";
     }
 
-    /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step"/>.</summary>
+    /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>.</summary>
     public bool IsBody => _steps.Length > 0;
     /// <summary>A body mover's state before the first frame (velocity, friction, elasticity…).</summary>
     public Body.BodyState StartBody { get; }

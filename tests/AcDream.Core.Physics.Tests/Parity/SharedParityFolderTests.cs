@@ -12,17 +12,7 @@ namespace AcDream.Core.Physics.Tests.Parity;
 /// </summary>
 public class SharedParityFolderTests
 {
-    /// <summary>The shared folder <paramref name="name"/>, found by walking up from the test binaries; null when absent.</summary>
-    internal static string? FindShared(string name)
-    {
-        for (var dir = new DirectoryInfo(AppContext.BaseDirectory); dir is not null; dir = dir.Parent)
-        {
-            string candidate = Path.Combine(dir.FullName, "shared", name);
-            if (File.Exists(Path.Combine(candidate, "README.md")))
-                return candidate;
-        }
-        return null;
-    }
+    internal static string? FindShared(string name) => SharedFolders.Find(name);
 
     public static TheoryData<string, string> Files()
     {
