@@ -68,7 +68,7 @@ public sealed class MoverDescription
     /// <see cref="PhysicsState.EdgeSlide"/> (retail's player state word 0x00400408 carries EDGE_SLIDE_PS) means
     /// a mover on walkable ground does not walk off a drop deeper than its step-down height: at such an edge
     /// it slides along it or stops there (CTransition::edge_slide), in <see cref="PhysicsEngine.Resolve"/> and
-    /// <see cref="PhysicsEngine.Step"/> alike. A drop within the step-down is stepped down; a mover in the air
+    /// <c>PhysicsEngine.Step</c> alike. A drop within the step-down is stepped down; a mover in the air
     /// (a jump) is not held. For a mover that walks or runs off such an edge and falls, drop the flag:
     /// <c>MoverDescription.Player().With(physicsState: PhysicsState.Gravity)</c> (see <see cref="With"/>).
     /// </remarks>

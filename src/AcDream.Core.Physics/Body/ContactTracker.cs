@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics.Body;
 /// contact with, since when, and whether it is colliding with the environment; each call to
 /// <see cref="Track(in BodyStepResult, in MoverState, double)"/> lists the contacts that started and ended
 /// (<see cref="Events"/>). Keep one per mover beside its <see cref="MoverState"/>, and call it after every
-/// <see cref="PhysicsEngine.Step"/> or <see cref="PhysicsEngine.Resolve"/> of that mover with the clock the
+/// <c>PhysicsEngine.Step</c> or <see cref="PhysicsEngine.Resolve"/> of that mover with the clock the
 /// host runs the world on (retail PhysicsTimer::curr_time).
 /// </summary>
 /// <remarks>
@@ -59,7 +59,7 @@ public sealed class ContactTracker
     public bool IsTouching(uint objectId) => Find(objectId) >= 0;
 
     /// <summary>
-    /// Tracks a body step: <paramref name="previous"/> is the state passed to <see cref="PhysicsEngine.Step"/>,
+    /// Tracks a body step: <paramref name="previous"/> is the state passed to <c>PhysicsEngine.Step</c>,
     /// <paramref name="now"/> the host's clock after the step, in seconds (never earlier than the last call's).
     /// </summary>
     public void Track(in BodyStepResult step, in MoverState previous, double now) =>

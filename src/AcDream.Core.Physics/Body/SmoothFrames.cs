@@ -4,7 +4,7 @@ using System.Numerics;
 namespace AcDream.Core.Physics.Body;
 
 /// <summary>
-/// Drawing a body between quanta (not retail: retail draws the physics pose as it is). <see cref="PhysicsEngine.Step"/>
+/// Drawing a body between quanta (not retail: retail draws the physics pose as it is). <c>PhysicsEngine.Step</c>
 /// moves a body in quanta of at least 1/30 s, so at 144 Hz only about one frame in five sees a new position. A
 /// renderer instead draws, every frame, the pose <see cref="BodyStepResult.QuantumFraction"/> of the way from
 /// where the last quantum began (<see cref="BodyState.QuantumStart"/>) to where it ended: one quantum behind the
