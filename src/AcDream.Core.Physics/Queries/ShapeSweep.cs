@@ -55,6 +55,10 @@ internal static class ShapeSweep
         var indices = tree.IndexArray;
         if (!Reaches(nodes[0].Bounds, lc, end, lr))
             return false;
+        // The swept sphere's box, widened like MayReach's reach (and a little for rounding); shrinks with best.
+        var grow = new Vector3(lr + ReferenceToi.ContactSlop + BoxSlack);
+        var sweptMin = Vector3.Min(lc, end) - grow;
+        var sweptMax = Vector3.Max(lc, end) + grow;
         for (int i = 0; i < nodes.Length; i++)
         {
             ref readonly var node = ref nodes[i];
@@ -63,7 +67,7 @@ internal static class ShapeSweep
             for (int k = 0; k < node.PolygonCount; k++)
             {
                 var polygon = polygons[indices[node.FirstPolygon + k]];
-                if (!MayReach(polygon, lc, end, lr))
+                if (!BoxesMeet(polygon, sweptMin, sweptMax) || !MayReach(polygon, lc, end, lr))
                     continue;
                 if (!ReferenceToi.Polygon(lc, ld, lr, polygon, out var hit))
                     continue;
@@ -74,6 +78,8 @@ internal static class ShapeSweep
                 {
                     improved = true;
                     end = lc + ld * best.Fraction;
+                    sweptMin = Vector3.Min(lc, end) - grow;
+                    sweptMax = Vector3.Max(lc, end) + grow;
                 }
             }
         }
@@ -114,6 +120,22 @@ internal static class ShapeSweep
             return false;
         return best.Offer(hit.Time, hit.Normal);
     }
+
+    // Slack on the swept box for float rounding of the local coordinates (the cast is expressed in the tree's
+    // space in float): far above it for coordinates of a few hundred metres.
+    private const float BoxSlack = 1e-3f;
+
+    /// <summary>
+    /// The cheapest test before the exact one: false when the polygon's box and the box swept by the sphere
+    /// (from the start to the best contact so far, widened by the radius and the contact slop) do not meet.
+    /// An accepted contact has its centre on that stretch and lies within radius + slop of the polygon, so
+    /// every contact <see cref="ReferenceToi.Polygon"/> could report that <see cref="Best.Offer"/> would keep
+    /// passes; the rest cost the exact test's closest point, face, edges and vertices for nothing.
+    /// </summary>
+    private static bool BoxesMeet(Polygon polygon, Vector3 sweptMin, Vector3 sweptMax) =>
+        polygon.BoxMin.X <= sweptMax.X && polygon.BoxMax.X >= sweptMin.X
+        && polygon.BoxMin.Y <= sweptMax.Y && polygon.BoxMax.Y >= sweptMin.Y
+        && polygon.BoxMin.Z <= sweptMax.Z && polygon.BoxMax.Z >= sweptMin.Z;
 
     /// <summary>
     /// A cheap test before the exact one: false when the swept sphere stays clear of the polygon's plane

@@ -289,11 +289,11 @@ public sealed class WorldQuery
         switch (shape.Kind)
         {
             case ShadowShapeKind.Bsp:
-                var part = row.Position.Frame.Combine(shape.PartFrame);
+                var part = row.PartPosition.Frame; // the registry's Frame::combine, same bits
                 return ShapeSweep.Tree(shape.Model!.Bsp, part, shift, shape.ModelScale, c, d, r, walkableOnly, ref best);
             case ShadowShapeKind.Cylinder:
                 var cyl = shape.Cylinder;
-                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + shift;
+                cyl.LowPoint = row.PlacedPoint + shift; // the registry's Position::localtoglobal, same bits
                 return ShapeSweep.Cylinder(cyl, c, d, r, walkableOnly, ref best);
             default:
                 return ShapeSweep.Sphere(bounds, c, d, r, walkableOnly, ref best);
@@ -351,13 +351,13 @@ public sealed class WorldQuery
         {
             case ShadowShapeKind.Bsp:
                 var model = shape.Model!;
-                var part = row.Position.Frame.Combine(shape.PartFrame);
+                var part = row.PartPosition.Frame; // the registry's Frame::combine, same bits
                 float inv = 1f / shape.ModelScale;
                 var local = new Sphere(part.GlobalToLocal(c - shift) * inv, r * inv);
                 return local.Intersects(model.BoundingSphere) && Bsp.BspQuery.SphereIntersectsSolid(model.Bsp, local);
             case ShadowShapeKind.Cylinder:
                 var cyl = shape.Cylinder;
-                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + shift;
+                cyl.LowPoint = row.PlacedPoint + shift; // the registry's Position::localtoglobal, same bits
                 return Vector3.DistanceSquared(ReferenceToi.ClosestPointOnCylinder(c, cyl), c) <= r * r;
             default:
                 float reach = bounds.Radius + r;
