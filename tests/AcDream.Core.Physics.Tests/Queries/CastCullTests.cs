@@ -5,9 +5,10 @@ using AcDream.Core.Physics.Tests.Support;
 namespace AcDream.Core.Physics.Tests.Queries;
 
 /// <summary>
-/// Casts whose contact lies at the rim of what the sweep's cull lets through (a polygon's box widened by
-/// the radius, the segment against that box), against hand-computed answers on the door scene: the slab
-/// spans x 99.5..100.5, front face y = 99.991, z 0..2.2.
+/// Casts at the edges of what a cast skips — a polygon's box widened by the radius, the segment against
+/// that box, an object listed in two cells swept once — against hand-computed answers. Door scene: the slab
+/// spans x 99.5..100.5, front face y = 99.991, z 0..2.2. Cottage: the same door at y 99.85 across the
+/// doorway's portal (y = 100), its slab y 99.841..100.102, listed in the land cell and in the room.
 /// </summary>
 public class CastCullTests
 {
@@ -41,5 +42,23 @@ public class CastCullTests
         Assert.Equal((DoorFront - 98f) / 4f, hit.Fraction, 5);
         AssertVec.Near(new Vector3(0, -1, 0), hit.Normal);
         AssertVec.Near(new Vector3(99.6f + 1.8f * (DoorFront - 98f) / 4f, DoorFront, 1f), hit.Point, 1e-4f);
+    }
+
+    [Fact]
+    public void SphereCasts_ThroughTheCottageDoorway_HitTheDoorListedInTheLandCellAndTheRoom_FromEitherSide()
+    {
+        var q = new WorldQuery(SceneLibrary.Load("cottage").World);
+        // From outside: the front face y = 99.841 stops the centre at 99.541.
+        Assert.True(q.SphereCast(At(100f, 97f, 1f), new Vector3(100f, 103f, 1f), 0.3f, out var inward));
+        Assert.Equal(SurfaceKind.Object, inward.Kind);
+        Assert.Equal(Door, inward.ObjectId);
+        Assert.Equal(Land, inward.CellId);
+        Assert.Equal((99.841f - 0.3f - 97f) / 6f, inward.Fraction, 4);
+        AssertVec.Near(new Vector3(0, -1, 0), inward.Normal, 1e-4f);
+        // From inside the room: the back face y = 100.102 stops the centre at 100.402.
+        Assert.True(q.SphereCast(new Position(0xA9B40100, new Vector3(100f, 103f, 1f)), new Vector3(100f, 97f, 1f), 0.3f, out var outward));
+        Assert.Equal(Door, outward.ObjectId);
+        Assert.Equal((103f - 100.402f) / 6f, outward.Fraction, 4);
+        AssertVec.Near(new Vector3(0, 1, 0), outward.Normal, 1e-4f);
     }
 }
