@@ -77,6 +77,9 @@ internal sealed class Workload
     // player's spheres (r 0.48) touch it head-on with the centre at y = 99.511.
     private const float FrontStop = 100f - 0.009f - 0.48f;
 
+    // 4 m/s at 30 Hz, heading 20° from the face's tangent into the face (+Y), so every frame presses into it.
+    private static readonly Vector3 FaceSlideStep = new(4f / 30f * 0.9396926f, 4f / 30f * 0.34202015f, 0);
+
     /// <summary>Every workload, in report order.</summary>
     public static IReadOnlyList<Workload> All() =>
     [
@@ -92,6 +95,8 @@ internal sealed class Workload
             Standing(100f, FrontStop - 0.05f), new Vector3(0, 0.1f, 0), 1),
         new("door+1000", "the door transition with 1,000 props in the door's cell (4 m or more from the door)", DoorWorld(1000, 0),
             Standing(100f, FrontStop - 0.05f), new Vector3(0, 0.1f, 0), 1),
+        new("face-slide", "the player sliding along the face at 4 m/s, 30 Hz: 8 frames heading 20° into it from (99.5, touching)",
+            DoorWorld(0, 0), Standing(99.5f, FrontStop), FaceSlideStep, 8),
         new("slide-ne+100", "the NE slide with 100 props in the door's cell", DoorWorld(100, 0),
             Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
     ];

@@ -49,6 +49,7 @@ public sealed class Polygon
         Sides = sides;
         Plane = MakePlane(_vertices, name);
         Guard.ConvexPolygon(_vertices, Plane, name);
+        (BoxMin, BoxMax) = Box(_vertices);
     }
 
     /// <summary>
@@ -61,6 +62,21 @@ public sealed class Polygon
         _vertices = pieceVertices;
         Sides = sides;
         Plane = MakePlane(_vertices, name);
+        (BoxMin, BoxMax) = Box(_vertices);
+    }
+
+    /// <summary>The vertices' axis-aligned box (exact: the corners are vertex coordinates), for culling before exact tests.</summary>
+    internal readonly Vector3 BoxMin, BoxMax;
+
+    private static (Vector3 Min, Vector3 Max) Box(Vector3[] vertices)
+    {
+        Vector3 min = vertices[0], max = vertices[0];
+        for (int i = 1; i < vertices.Length; i++)
+        {
+            min = Vector3.Min(min, vertices[i]);
+            max = Vector3.Max(max, vertices[i]);
+        }
+        return (min, max);
     }
 
     /// <summary>The vertices.</summary>

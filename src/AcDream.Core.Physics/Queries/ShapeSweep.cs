@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
@@ -45,8 +46,10 @@ internal static class ShapeSweep
         bool walkableOnly, ref Best best)
     {
         float inv = 1f / scale;
-        var lc = frame.GlobalToLocal(c - blockShift) * inv;
-        var ld = frame.GlobalToLocalVec(d) * inv;
+        // The frame's matrix once (Frame's own transforms rebuild it from the quaternion at each call).
+        var matrix = frame.Matrix;
+        var lc = matrix.FrameToLocal(c - blockShift, frame.Origin) * inv;
+        var ld = matrix.FrameToLocal(d) * inv;
         float lr = r * inv;
         var end = lc + ld * best.Fraction;
         bool improved = false;
@@ -55,6 +58,10 @@ internal static class ShapeSweep
         var indices = tree.IndexArray;
         if (!Reaches(nodes[0].Bounds, lc, end, lr))
             return false;
+        // How far from a polygon's box a kept contact's centre can lie: MayReach's reach and a little for rounding.
+        float grow = lr + ReferenceToi.ContactSlop + BoxSlack;
+        var sweptMin = Vector3.Min(lc, end) - new Vector3(grow);
+        var sweptMax = Vector3.Max(lc, end) + new Vector3(grow);
         for (int i = 0; i < nodes.Length; i++)
         {
             ref readonly var node = ref nodes[i];
@@ -63,17 +70,19 @@ internal static class ShapeSweep
             for (int k = 0; k < node.PolygonCount; k++)
             {
                 var polygon = polygons[indices[node.FirstPolygon + k]];
-                if (!MayReach(polygon, lc, end, lr))
+                if (!BoxesMeet(polygon, sweptMin, sweptMax) || !SegmentMeetsBox(polygon, lc, end, grow) || !MayReach(polygon, lc, end, lr))
                     continue;
                 if (!ReferenceToi.Polygon(lc, ld, lr, polygon, out var hit))
                     continue;
-                var normal = frame.LocalToGlobalVec(hit.Normal);
+                var normal = matrix.FrameToGlobal(hit.Normal);
                 if (walkableOnly && !(normal.Z >= PhysicsConstants.FloorZ))
                     continue;
                 if (best.Offer(hit.Time, normal))
                 {
                     improved = true;
                     end = lc + ld * best.Fraction;
+                    sweptMin = Vector3.Min(lc, end) - new Vector3(grow);
+                    sweptMax = Vector3.Max(lc, end) + new Vector3(grow);
                 }
             }
         }
@@ -113,6 +122,52 @@ internal static class ShapeSweep
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
         return best.Offer(hit.Time, hit.Normal);
+    }
+
+    // Slack on the polygon's box for float rounding of the local coordinates (the cast is expressed in the tree's
+    // space in float): far above it for coordinates of a few hundred metres.
+    private const float BoxSlack = 1e-3f;
+
+    /// <summary>
+    /// The cheapest test: false when the polygon's box and the box of the segment swept so far, both
+    /// widened as in <see cref="SegmentMeetsBox"/>, do not meet (the swept box is passed widened).
+    /// </summary>
+    private static bool BoxesMeet(Polygon polygon, Vector3 sweptMin, Vector3 sweptMax) =>
+        polygon.BoxMin.X <= sweptMax.X && polygon.BoxMax.X >= sweptMin.X
+        && polygon.BoxMin.Y <= sweptMax.Y && polygon.BoxMax.Y >= sweptMin.Y
+        && polygon.BoxMin.Z <= sweptMax.Z && polygon.BoxMax.Z >= sweptMin.Z;
+
+    /// <summary>
+    /// The next test before the exact one, after <see cref="BoxesMeet"/>: false when the segment from <paramref name="a"/> to
+    /// <paramref name="b"/> (the start and the best contact so far) misses the polygon's box widened by
+    /// <paramref name="grow"/> (radius + contact slop + slack). An accepted contact has its centre on that
+    /// segment within radius + slop of the polygon, so inside the widened box: every contact
+    /// <see cref="ReferenceToi.Polygon"/> could report that <see cref="Best.Offer"/> would keep passes; the
+    /// rest would cost the exact test's closest point, face, edges and vertices for nothing. A slab test
+    /// (a diagonal cast's own box holds far more polygons than the cast comes near), with the entry and exit
+    /// fractions compared with a margin far above their rounding.
+    /// </summary>
+    private static bool SegmentMeetsBox(Polygon polygon, Vector3 a, Vector3 b, float grow)
+    {
+        var lo = polygon.BoxMin - new Vector3(grow);
+        var hi = polygon.BoxMax + new Vector3(grow);
+        var d = b - a;
+        float enter = 0f, exit = 1f;
+        Slab(a.X, d.X, lo.X, hi.X, ref enter, ref exit);
+        Slab(a.Y, d.Y, lo.Y, hi.Y, ref enter, ref exit);
+        Slab(a.Z, d.Z, lo.Z, hi.Z, ref enter, ref exit);
+        return enter <= exit + 1e-4f;
+    }
+
+    // Narrows [enter, exit] to the fractions at which a + t·d lies between lo and hi on one axis (an axis the
+    // segment does not cross is left to BoxesMeet, which already found it inside the slab).
+    private static void Slab(float a, float d, float lo, float hi, ref float enter, ref float exit)
+    {
+        if (!(MathF.Abs(d) > 1e-6f))
+            return;
+        float t0 = (lo - a) / d, t1 = (hi - a) / d;
+        enter = MathF.Max(enter, MathF.Min(t0, t1));
+        exit = MathF.Min(exit, MathF.Max(t0, t1));
     }
 
     /// <summary>

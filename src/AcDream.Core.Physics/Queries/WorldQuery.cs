@@ -34,6 +34,10 @@ public sealed class WorldQuery
 
     private readonly List<Cell> _cells = new(32);
     private readonly CellArray _cellArray = new();
+    // The objects a cast has swept: an object listed in several of its cells (a door across a doorway's
+    // portal) is swept once. A second sweep of the same rows could only tie or trail the first, and the
+    // first found wins a tie, so skipping it changes no answer.
+    private readonly HashSet<uint> _swept = new();
     private readonly PhysicsEngine _viewer;
     private MoverDescription? _viewerMover;
     private int _landCount;
@@ -213,6 +217,9 @@ public sealed class WorldQuery
         CollectCells(from, d, new Vector3(r), r);
         var best = ShapeSweep.Best.None(1f);
         var kind = SurfaceKind.None;
+        bool manyCells = _cells.Count > 1;
+        if (manyCells)
+            _swept.Clear();
         uint cellId = 0, objectId = 0;
         foreach (var cell in _cells)
         {
@@ -241,7 +248,8 @@ public sealed class WorldQuery
             for (int o = 0; o < objects.Count; o++)
             {
                 var rows = objects.RowsOf(o);
-                if (rows.Length == 0 || !Selected(rows[0], layers, ignoreId, out var rung))
+                if (rows.Length == 0 || !Selected(rows[0], layers, ignoreId, out var rung)
+                    || (manyCells && !_swept.Add(rows[0].EntityId)))
                     continue;
                 for (int i = 0; i < rows.Length; i++)
                     if (rows[i].Kind == rung && SweepRow(rows[i], frameCell, c, d, r, walkableOnly, ref best))
@@ -289,11 +297,11 @@ public sealed class WorldQuery
         switch (shape.Kind)
         {
             case ShadowShapeKind.Bsp:
-                var part = row.Position.Frame.Combine(shape.PartFrame);
+                var part = row.PartPosition.Frame; // the registry's Frame::combine, same bits
                 return ShapeSweep.Tree(shape.Model!.Bsp, part, shift, shape.ModelScale, c, d, r, walkableOnly, ref best);
             case ShadowShapeKind.Cylinder:
                 var cyl = shape.Cylinder;
-                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + shift;
+                cyl.LowPoint = row.PlacedPoint + shift; // the registry's Position::localtoglobal, same bits
                 return ShapeSweep.Cylinder(cyl, c, d, r, walkableOnly, ref best);
             default:
                 return ShapeSweep.Sphere(bounds, c, d, r, walkableOnly, ref best);
@@ -351,13 +359,13 @@ public sealed class WorldQuery
         {
             case ShadowShapeKind.Bsp:
                 var model = shape.Model!;
-                var part = row.Position.Frame.Combine(shape.PartFrame);
+                var part = row.PartPosition.Frame; // the registry's Frame::combine, same bits
                 float inv = 1f / shape.ModelScale;
                 var local = new Sphere(part.GlobalToLocal(c - shift) * inv, r * inv);
                 return local.Intersects(model.BoundingSphere) && Bsp.BspQuery.SphereIntersectsSolid(model.Bsp, local);
             case ShadowShapeKind.Cylinder:
                 var cyl = shape.Cylinder;
-                cyl.LowPoint = row.Position.LocalToGlobal(cyl.LowPoint) + shift;
+                cyl.LowPoint = row.PlacedPoint + shift; // the registry's Position::localtoglobal, same bits
                 return Vector3.DistanceSquared(ReferenceToi.ClosestPointOnCylinder(c, cyl), c) <= r * r;
             default:
                 float reach = bounds.Radius + r;
