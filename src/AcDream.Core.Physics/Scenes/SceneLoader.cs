@@ -34,7 +34,7 @@ public static class SceneLoader
     public static Scene LoadFile(string path)
     {
         ArgumentNullException.ThrowIfNull(path);
-        return Load(File.ReadAllText(path), Path.GetFileNameWithoutExtension(path));
+        return Load(BoundedFile.ReadText(path, BoundedFile.MaxSceneBytes, "scene file"), Path.GetFileNameWithoutExtension(path));
     }
 
     /// <summary>Loads a scene from its JSON text.</summary>
