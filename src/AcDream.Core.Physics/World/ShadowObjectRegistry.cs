@@ -88,7 +88,8 @@ public sealed class ShadowObjectRegistry
             if (shapes[i] is null)
                 throw new ArgumentException($"{name}.shapes[{i}]: is null.", nameof(shapes));
         Guard.Extent(scale, false, $"{name}.scale");
-        position = CheckPosition(position, entityId);
+        var localBounds = Enclose(shapes);
+        position = CheckPosition(position, entityId, Reach(localBounds));
 
         var record = new Record
         {
@@ -100,7 +101,7 @@ public sealed class ShadowObjectRegistry
             if (shape.Kind == ShadowShapeKind.Cylinder) record.CylCount++;
             if (shape.Kind == ShadowShapeKind.Sphere) record.SphereCount++;
         }
-        record.LocalBounds = Enclose(shapes);
+        record.LocalBounds = localBounds;
         FindCells(record, _newCells);
         _objects.Add(entityId, record);
         WriteRows(record);
@@ -116,7 +117,7 @@ public sealed class ShadowObjectRegistry
     {
         if (!_objects.TryGetValue(entityId, out var record))
             throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
-        position = CheckPosition(position, entityId);
+        position = CheckPosition(position, entityId, Reach(record.LocalBounds));
         var old = record.Position;
         record.Position = position;
         try
@@ -217,18 +218,29 @@ public sealed class ShadowObjectRegistry
     public Position PositionOf(uint entityId) =>
         _objects.TryGetValue(entityId, out var record) ? record.Position : throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
 
-    /// <summary>Validates a position; the field names (which hold the id) are built only when a check fails.</summary>
-    private Position CheckPosition(Position position, uint entityId)
+    /// <summary>
+    /// Validates a position: a valid frame, a cell in the world, and an origin near that cell (the movers'
+    /// rule, <see cref="Guard.NearCell"/>: the cell an object names decides which cells list it, so a wrong
+    /// label changed the physics). The field names (which hold the id) are built only when a check fails.
+    /// </summary>
+    private Position CheckPosition(Position position, uint entityId, float reach)
     {
-        if (!Guard.IsValidFrame(position.Frame) || _graph.Get(position.CellId) is null)
+        var cell = _graph.Get(position.CellId);
+        if (!Guard.IsValidFrame(position.Frame) || cell is null)
         {
             string name = $"object 0x{entityId:X8}";
             Guard.Frame(position.Frame, $"{name}.position");
-            _graph.GetRequired(position.CellId, $"{name}.position.cell");
+            cell = _graph.GetRequired(position.CellId, $"{name}.position.cell");
         }
+        float outside = cell.DistanceOutside(position.Frame.Origin);
+        if (!(outside <= InputLimits.MaxDistanceFromCell + reach))
+            Guard.NearCell(outside, reach, position.CellId, position.Frame.Origin, $"object 0x{entityId:X8}.position.origin");
         position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
         return position;
     }
+
+    /// <summary>How far an object's shapes reach from its origin (its shapes are scaled already).</summary>
+    private static float Reach(in Sphere localBounds) => localBounds.Center.Length() + localBounds.Radius;
 
     private static Sphere Enclose(ShadowShape[] shapes)
     {
