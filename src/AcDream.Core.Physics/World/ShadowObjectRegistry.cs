@@ -1,7 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Diagnostics.CodeAnalysis;
+using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
+using System.Threading;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
@@ -13,7 +16,10 @@ namespace AcDream.Core.Physics.World;
 /// carrying its <see cref="ShadowEntry"/> rows: one row per collision shape, an object present once in every
 /// cell it overlaps.
 /// Single writer: register, move and unregister from one thread while no query runs; queries may run in
-/// parallel when nothing is being modified.
+/// parallel when nothing is being modified. A second thread writing while one is (a caller's bug) is
+/// detected, as .NET's collections detect a modification during enumeration: its call throws
+/// <see cref="InvalidOperationException"/> before changing anything, the other completes, and the
+/// registry stays usable. Queries running during a write are not detected.
 /// </summary>
 public sealed class ShadowObjectRegistry
 {
@@ -50,6 +56,8 @@ public sealed class ShadowObjectRegistry
     private readonly Dictionary<uint, Record> _objects = new();
     private readonly CellArray _scratch = new();
     private readonly List<uint> _newCells = new(4);
+    // 1 while a thread is registering, moving or removing: a second writer meets it and throws.
+    private int _writing;
 
     /// <summary>Creates an empty registry over a world's cells.</summary>
     public ShadowObjectRegistry(CellGraph graph) => _graph = graph ?? throw new ArgumentNullException(nameof(graph));
@@ -79,6 +87,19 @@ public sealed class ShadowObjectRegistry
 
     /// <summary>Registers an object from shapes already built by <see cref="ShadowShapeBuilder.FromSetup"/>.</summary>
     internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None)
+    {
+        BeginWrite(nameof(Register));
+        try
+        {
+            RegisterCore(entityId, shapes, position, scale, state, flags);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private void RegisterCore(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags)
     {
         ArgumentNullException.ThrowIfNull(shapes);
         string name = $"object 0x{entityId:X8}";
@@ -115,6 +136,19 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     public void Move(uint entityId, Position position)
     {
+        BeginWrite(nameof(Move));
+        try
+        {
+            MoveCore(entityId, position);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private void MoveCore(uint entityId, Position position)
+    {
         if (!_objects.TryGetValue(entityId, out var record))
             throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
         position = CheckPosition(position, entityId, Reach(record.LocalBounds));
@@ -141,17 +175,25 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     internal void Replace(uint entityId, Position position, PhysicsState state)
     {
-        if (!_objects.TryGetValue(entityId, out var old))
-            throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
-        Unregister(entityId);
+        BeginWrite(nameof(Replace));
         try
         {
-            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags);
+            if (!_objects.TryGetValue(entityId, out var old))
+                throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+            UnregisterCore(entityId);
+            try
+            {
+                RegisterCore(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags);
+            }
+            catch
+            {
+                RegisterCore(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags);
+                throw;
+            }
         }
-        catch
+        finally
         {
-            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags);
-            throw;
+            EndWrite();
         }
     }
 
@@ -161,11 +203,38 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     public bool Unregister(uint entityId)
     {
+        BeginWrite(nameof(Unregister));
+        try
+        {
+            return UnregisterCore(entityId);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private bool UnregisterCore(uint entityId)
+    {
         if (!_objects.Remove(entityId, out var record))
             return false;
         RemoveFromCells(record);
         return true;
     }
+
+    /// <summary>Takes the writer's flag; a thread that finds it taken throws before changing anything.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void BeginWrite(string operation)
+    {
+        if (Interlocked.CompareExchange(ref _writing, 1, 0) != 0)
+            ThrowConcurrentWrite(operation);
+    }
+
+    private void EndWrite() => Volatile.Write(ref _writing, 0);
+
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowConcurrentWrite(string operation) =>
+        throw new InvalidOperationException($"ShadowObjectRegistry.{operation}: another thread is modifying the registry; it takes one writer at a time. This call changed nothing.");
 
     /// <summary>
     /// The rows of a cell's objects, in the order they are tested (empty for a cell with no objects): rows of
