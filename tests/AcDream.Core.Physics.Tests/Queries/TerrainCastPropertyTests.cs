@@ -341,12 +341,7 @@ public class TerrainCastPropertyTests(ITestOutputHelper output)
             var m = c - a;
             var mp = m - D3.Dot(m, axis) * axis;
             var dp = d - D3.Dot(d, axis) * axis;
-            double qa = D3.Dot(dp, dp), qb = D3.Dot(mp, dp), qc = D3.Dot(mp, mp) - r * r;
-            double disc = qb * qb - qa * qc;
-            if (qa == 0 || disc <= 0 || qb >= 0)
-                return;
-            double time = (-qb - Math.Sqrt(disc)) / qa;
-            if (time < 0 || time > 1 || time >= best.Time)
+            if (!Entry(mp, dp, r, best.Time, out double time))
                 return;
             double along = D3.Dot(m + time * d, axis);
             if (along < 0 || along > (b - a).Length)
@@ -357,14 +352,17 @@ public class TerrainCastPropertyTests(ITestOutputHelper output)
         private static void Ball(D3 p, D3 c, D3 d, double r, ref RefHit best)
         {
             var m = c - p;
+            if (Entry(m, d, r, best.Time, out double time))
+                best = new RefHit(true, time, (m + time * d).Unit);
+        }
+
+        /// <summary>The time in [0, 1], before <paramref name="limit"/>, at which |m + t·d| falls to r from above (a tangent is no entry).</summary>
+        private static bool Entry(D3 m, D3 d, double r, double limit, out double time)
+        {
             double qa = D3.Dot(d, d), qb = D3.Dot(m, d), qc = D3.Dot(m, m) - r * r;
             double disc = qb * qb - qa * qc;
-            if (qa == 0 || disc <= 0 || qb >= 0)
-                return;
-            double time = (-qb - Math.Sqrt(disc)) / qa;
-            if (time < 0 || time > 1 || time >= best.Time)
-                return;
-            best = new RefHit(true, time, (m + time * d).Unit);
+            time = qa == 0 || disc <= 0 || qb >= 0 ? -1 : (-qb - Math.Sqrt(disc)) / qa;
+            return time >= 0 && time <= 1 && time < limit;
         }
 
         private static bool InTriangle(in Triangle t, D3 p, double grow = 0) =>

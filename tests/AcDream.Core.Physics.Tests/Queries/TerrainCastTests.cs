@@ -29,6 +29,9 @@ public class TerrainCastTests
         // Moving along the ground is not moving into it, on either side of the cell edge at x = 24.
         Assert.False(q.RayCast(new Position(Land, new Vector3(10, 100, 0)), new Vector3(30, 100, 0), out var hit), hit.ToString());
         Assert.False(q.SphereCast(new Position(Land, new Vector3(10, 100, 0)), new Vector3(30, 100, 0), 0f, out hit), hit.ToString());
+        // Starting 4 µm short of the edge (within the contact slop of the next cell's triangles): a ray is
+        // judged by the face's normal, along which it does not move, not by the direction to the edge.
+        Assert.False(q.RayCast(new Position(Land, new Vector3(23.999996f, 100, 0)), new Vector3(30, 100, 0), out hit), hit.ToString());
     }
 
     [Fact]
@@ -36,6 +39,59 @@ public class TerrainCastTests
     {
         var q = FlatBlocks();
         Assert.False(q.SphereCast(new Position(Land, new Vector3(10, 100, 0.3f)), new Vector3(300, 130, 0.3f), 0.3f, out var hit), hit.ToString());
+    }
+
+    [Fact]
+    public void SphereCast_PassingBesideABall_WithinTheSumOfTheRadii_HitsIt()
+    {
+        // A 0.5 m ball at (100, 100, 1); a 0.3 m sphere passes 0.7 m beside its centre, under 0.8 m:
+        // contact when (x − 100)² + 0.7² = 0.8², x = 100 − √0.15. Its centre's path stays outside the
+        // ball's bounds: only the cast's radius brings it within reach.
+        var world = new PhysicsWorld();
+        world.Cells.AddLandblock(Terrain.Flat(0xA9B4, 0f));
+        world.Objects.Register(7, new Physics.Shapes.PhysicsSetup { Spheres = [new Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] }, Position.Outdoor(0xA9B4, new Vector3(100, 100, 1)));
+        var q = new WorldQuery(world);
+        Assert.True(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(98, 100.7f, 1)), new Vector3(102, 100.7f, 1), 0.3f, out var hit));
+        Assert.Equal(7u, hit.ObjectId);
+        Assert.Equal((100 - MathF.Sqrt(0.15f) - 98) / 4, hit.Fraction, 4);
+        Assert.False(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(98, 100.85f, 1)), new Vector3(102, 100.85f, 1), 0.3f, out _));
+    }
+
+    [Fact]
+    public void AShallowRay_ThroughTheSeamOfTwoTiltedTriangles_HitsOneOfThem()
+    {
+        // Landblock 0xAAB5 of a plane z = 30 + 0.07 x − 0.04 y (global metres from landblock 0xA8B3's
+        // corner, heights rounded to float, so neighbouring triangles are a few micrometres off one plane).
+        // The ray descends at 0.4° onto the midpoint of the edge between cells (4, 6) and (4, 7), reached at
+        // two thirds of its length; each triangle's own plane crossing lies a fraction of a millimetre
+        // outside it, on the other's side (the case the property test found).
+        var heights = new float[81];
+        for (int x = 0; x <= 8; x++)
+            for (int y = 0; y <= 8; y++)
+                heights[x * 9 + y] = 30f + 0.07f * (float)(384 + 24 * x) + -0.04f * (float)(384 + 24 * y);
+        var world = new PhysicsWorld();
+        world.Cells.AddLandblock(new Terrain(0xAAB5, heights));
+        var q = new WorldQuery(world);
+        Assert.True(q.RayCast(new Position(0xAAB50001, new Vector3(90.74563f, 147.02267f, 42.18578f)), new Vector3(116.62718f, 178.48866f, 42.447105f), out var hit));
+        Assert.Equal(2f / 3f, hit.Fraction, 1e-4f);
+        Assert.Equal(SurfaceKind.Terrain, hit.Kind);
+    }
+
+    [Fact]
+    public void ASingleSidedFace_IsNotMetFromBehind_EvenAtItsEdge()
+    {
+        // A one-sided 2 m floor tile at z = 1 facing up (x 99..101). A 0.3 m sphere rising straight up
+        // 0.25 m east of its east edge, from 0.4 m below its plane to 0.6 m above: it comes within 0.3 m of
+        // the edge at z = 0.834, behind the plane, and leaves it above; no contact from behind. The same
+        // sphere falling 0.3 m above the tile, moving west, lands on its front.
+        var world = new PhysicsWorld();
+        world.Cells.AddLandblock(Terrain.Flat(0xA9B4, -10f));
+        var tile = new Physics.Shapes.PhysicsModel(Physics.Bsp.BspShapes.Floor(Vector3.Zero, new Vector2(2, 2)));
+        world.Objects.Register(9, new Physics.Shapes.PhysicsSetup { Parts = [new Physics.Shapes.SetupPart(tile, Frame.Identity)] }, Position.Outdoor(0xA9B4, new Vector3(100, 100, 1)));
+        var q = new WorldQuery(world);
+        Assert.False(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(101.25f, 100, 0.6f)), new Vector3(101.25f, 100, 1.6f), 0.3f, out var hit), hit.ToString());
+        Assert.True(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(101.5f, 100, 1.3f)), new Vector3(100.5f, 100, 1.27f), 0.3f, out hit));
+        Assert.Equal(9u, hit.ObjectId);
     }
 
     [Fact]
