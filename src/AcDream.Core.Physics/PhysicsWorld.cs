@@ -20,7 +20,7 @@ public sealed class PhysicsWorld
 
     /// <summary>
     /// Adds a landblock for streaming: its terrain's 64 land cells, then its env cells, then its buildings
-    /// (each as <see cref="CellGraph.AddLandblock"/>, <see cref="CellGraph.AddEnvCell"/> and
+    /// (each as <see cref="CellGraph.AddLandblock"/>, <see cref="CellGraph.AddEnvCells"/> and
     /// <see cref="CellGraph.AddBuilding"/> add them), then lists in its cells the objects already registered
     /// in it or in a landblock beside it (an object straddling the border from a loaded neighbour, or one of
     /// this landblock's objects that kept its rows in a neighbour while this landblock was away). Register the
@@ -43,8 +43,10 @@ public sealed class PhysicsWorld
                     var env = envCells[i] ?? throw new ArgumentException($"envCells[{i}]: is null.", nameof(envCells));
                     if (env.Id >> 16 != terrain.Landblock)
                         throw new ArgumentException($"envCells[{i}]: cell 0x{env.Id:X8} is not in landblock 0x{terrain.Landblock:X4}.", nameof(envCells));
-                    Cells.AddEnvCell(env);
                 }
+            // Together: the landblock's cells lead into each other through their portals.
+            if (envCells is not null)
+                Cells.AddEnvCells(envCells);
             if (buildings is not null)
                 for (int i = 0; i < buildings.Count; i++)
                 {

@@ -231,7 +231,8 @@ public sealed class BspTree
     private static void CheckPlane(Plane plane, string field)
     {
         Guard.Finite(plane.Normal, field, ".normal");
-        Guard.Finite(plane.D, field, ".d");
+        // A distance is a coordinate: within ±InputLimits.MaxCoordinate, so products inside a query stay finite.
+        Guard.Coordinate(plane.D, field, ".d");
         if (plane.Normal.LengthSquared() < 1e-12f)
             throw new ArgumentException($"{field}.normal: has zero length.", field);
     }

@@ -27,6 +27,9 @@ internal static class ParityReader
     /// <summary>The format of the real-cell files.</summary>
     public const string RealCellsFormat = "ace-parity-real";
 
+    /// <summary>The most frames a parity file's runs may hold in all (an ACE file holds about 50 000), checked before any run's frames are read.</summary>
+    public const int MaxFramesPerFile = 1_000_000;
+
     /// <summary>The ACE file whose every frame must match to the last bit.</summary>
     public const string BitIdenticalFile = "door.json.gz";
 
@@ -34,12 +37,15 @@ internal static class ParityReader
     public static ParitySet ReadFile(string path)
     {
         ArgumentNullException.ThrowIfNull(path);
+        BoundedFile.CheckRegular(path, BoundedFile.MaxParityBytes, "parity file");
         using var file = File.OpenRead(path);
         using var gzip = new GZipStream(file, CompressionMode.Decompress);
+        // JsonDocument reads the whole stream before parsing: the cap bounds what a small gzip can inflate to.
+        using var inflated = new BoundedFile.CappedStream(gzip, BoundedFile.MaxParityInflatedBytes, "a parity file may inflate to at most that");
         JsonDocument doc;
         try
         {
-            doc = JsonDocument.Parse(gzip, JsonRead.Options);
+            doc = JsonDocument.Parse(inflated, JsonRead.Options);
         }
         catch (JsonException ex)
         {
@@ -65,12 +71,33 @@ internal static class ParityReader
             throw new SceneFormatException("version", $"unsupported {format} version {version} (this reader reads version 1).");
         if (format == MotionParityReader.Format)
         {
+            // One run: the frame cap applies to the file's own frame list.
+            if (root.TryGetProperty("frames", out var frames) && frames.ValueKind == JsonValueKind.Array && frames.GetArrayLength() > MaxFramesPerFile)
+                throw new SceneFormatException("frames", $"the file holds more than {MaxFramesPerFile} frames.");
             var motion = MotionParityReader.Read(root, name, directory);
             return new ParitySet(name, motion.World, [], RequireBitIdentical: false, motion);
         }
+        CheckFrameTotal(root, format == AceFormat ? "approaches" : "movers");
         return format == AceFormat
             ? ReadAce(o, name)
             : ReadReal(o, name, directory);
+    }
+
+    /// <summary>Refuses a file whose runs hold more than <see cref="MaxFramesPerFile"/> frames in all, before any run is read (a malformed list is left to the reader's own errors).</summary>
+    private static void CheckFrameTotal(JsonElement root, string runsField)
+    {
+        if (!root.TryGetProperty(runsField, out var runs) || runs.ValueKind != JsonValueKind.Array)
+            return;
+        long total = 0;
+        int i = 0;
+        foreach (var run in runs.EnumerateArray())
+        {
+            if (run.ValueKind == JsonValueKind.Object && run.TryGetProperty("frames", out var frames) && frames.ValueKind == JsonValueKind.Array)
+                total += frames.GetArrayLength();
+            if (total > MaxFramesPerFile)
+                throw new SceneFormatException($"{runsField}[{i}].frames", $"the file's runs hold more than {MaxFramesPerFile} frames in all.");
+            i++;
+        }
     }
 
     private static string FirstSentence(string message)
@@ -186,7 +213,15 @@ internal static class ParityReader
         string scenePath = Path.Combine(directory, "scenes", sceneFile);
         if (!File.Exists(scenePath))
             throw new SceneFormatException("scene", $"scenes/{sceneFile} does not exist beside the file.");
-        string text = File.ReadAllText(scenePath);
+        string text;
+        try
+        {
+            text = BoundedFile.ReadText(scenePath, BoundedFile.MaxSceneBytes, "scene file");
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException("scene", $"scenes/{sceneFile} {ex.Detail}", ex);
+        }
         if (o.String("sceneSha256", null) is { } sha && !string.Equals(sha, SceneLoader.Sha256Of(text), StringComparison.OrdinalIgnoreCase))
             throw new SceneFormatException("sceneSha256", $"scenes/{sceneFile} has changed (its SHA-256 is {SceneLoader.Sha256Of(text)}).");
         Scene scene;
@@ -228,11 +263,12 @@ internal static class ParityReader
     {
         if (e.ValueKind != JsonValueKind.Array)
             throw new SceneFormatException(path, $"expected an array, got {JsonRead.Kind(e)}.");
-        var frames = new ParityFrame[e.GetArrayLength()];
-        if (frames.Length == 0)
+        int length = e.GetArrayLength();
+        if (length == 0)
             throw new SceneFormatException(path, "needs at least one frame.");
-        if (frames.Length > SceneLoader.MaxFramesPerMover)
+        if (length > SceneLoader.MaxFramesPerMover)
             throw new SceneFormatException(path, $"at most {SceneLoader.MaxFramesPerMover} frames.");
+        var frames = new ParityFrame[length];
         int i = 0;
         foreach (var f in e.EnumerateArray())
         {

@@ -93,7 +93,7 @@ internal static class ShapeSweep
     public static bool Polygon(Polygon polygon, Vector3 blockShift, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
     {
         var local = c - blockShift;
-        if (!MayReach(polygon, local, local + d * best.Fraction, r) || !ReferenceToi.Polygon(local, d, r, polygon, out var hit))
+        if (!MayReach(polygon, local, local + d * best.Fraction, r) || !ReferenceToi.Polygon(c, d, r, polygon, blockShift, out var hit))
             return false;
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
@@ -172,15 +172,15 @@ internal static class ShapeSweep
 
     /// <summary>
     /// A cheap test before the exact one: false when the swept sphere stays clear of the polygon's plane
-    /// (wholly in front of it, or wholly behind it), or starts behind a single-sided face — the cases in
-    /// which <see cref="ReferenceToi.Polygon"/> finds nothing.
+    /// (wholly in front of it, or wholly behind it), or stays behind a single-sided face — the cases in
+    /// which <see cref="ReferenceToi.Polygon(Vector3, Vector3, float, Geometry.Polygon, out ReferenceHit)"/> finds nothing.
     /// </summary>
     private static bool MayReach(Polygon polygon, Vector3 a, Vector3 b, float r)
     {
         var plane = polygon.Plane;
         float s0 = Vector3.Dot(plane.Normal, a) + plane.D;
         float s1 = Vector3.Dot(plane.Normal, b) + plane.D;
-        if (s0 < 0f && polygon.Sides == PolygonSides.Single)
+        if (s0 < 0f && s1 <= 0f && polygon.Sides == PolygonSides.Single)
             return false;
         float reach = r + ReferenceToi.ContactSlop;
         return !(s0 > reach && s1 > reach) && !(s0 < -reach && s1 < -reach);

@@ -414,6 +414,9 @@ public sealed class WorldQuery
         int baseX = (int)(block >> 8) * 8, baseY = (int)(block & 0xFF) * 8;
         const float size = PhysicsConstants.LandCellLength;
         const int worldCells = 2040;
+        // A footprint on a cell's edge takes the cells on both sides: a ray down the last loaded cell's outer
+        // edge (x = 192 of the world's eastern landblock) touches that cell's terrain, not the missing one's.
+        extent += new Vector3(PhysicsConstants.Epsilon);
         int gx0 = Math.Clamp(baseX + (int)MathF.Floor((MathF.Min(c.X, c.X + d.X) - extent.X) / size), 0, worldCells - 1);
         int gx1 = Math.Clamp(baseX + (int)MathF.Floor((MathF.Max(c.X, c.X + d.X) + extent.X) / size), 0, worldCells - 1);
         for (int gx = gx0; gx <= gx1; gx++)

@@ -64,6 +64,16 @@ public static class ReferenceToi
     /// </summary>
     public const float ContactSlop = 1e-5f;
 
+    /// <summary>
+    /// A sphere smaller than this is cast as a ray (metres): a ray meets a polygon only through its face, by
+    /// crossing the plane from the front inside the edges (within <see cref="InsideTolerance"/>, so a ray
+    /// through the seam of two faces hits one of them), and a ray touching a polygon at its start is judged
+    /// by the face's normal. Edges and vertices are not tested: a ray touches one only on the face's
+    /// boundary or while lying in its plane, and a contact normal from an edge to a centre on it has no
+    /// direction (it was NaN).
+    /// </summary>
+    internal const float RayRadius = 1e-4f;
+
     /// <summary>A sphere touching a shape "moves into it" when the normal component of its displacement is below −this × |d|.</summary>
     public const float ApproachTolerance = 1e-6f;
 
@@ -79,7 +89,7 @@ public static class ReferenceToi
         return t <= 1f;
     }
 
-    /// <summary>Time of impact with a point (a vertex), the sphere starting outside r of it.</summary>
+    /// <summary>Time of impact with a point (a vertex), the sphere starting outside r of it and moving into it.</summary>
     public static bool Point(Vector3 c, Vector3 d, float r, Vector3 p, out float t, out Vector3 normal)
     {
         t = 0f;
@@ -90,17 +100,19 @@ public static class ReferenceToi
         float cc = Vector3.Dot(m, m) - r * r;
         if (cc < 0f || b >= 0f || a <= 0f)
             return false;
-        float disc = b * b - a * cc;
-        if (disc < 0f)
+        // b² − a·cc by Lagrange's identity: a·r² − |m × d|², without subtracting two huge squares (far
+        // from the point, b² and a·|m|² agree in every float digit and their difference is rounding).
+        float disc = a * r * r - Vector3.Cross(m, d).LengthSquared();
+        if (disc <= a * GrazeDepth(r))
             return false;
-        t = (-b - MathF.Sqrt(disc)) / a;
+        // The smaller root in the form that does not cancel: cc / (−b + √disc).
+        t = cc / (-b + MathF.Sqrt(disc));
         if (t < 0f || t > 1f)
             return false;
-        normal = Vector3.Normalize(m + t * d);
-        return true;
+        return Approaching(m + t * d, d, out normal);
     }
 
-    /// <summary>Time of impact with a segment's interior (the edge cylinder between its end points), the sphere starting outside r of the line.</summary>
+    /// <summary>Time of impact with a segment's interior (the edge cylinder between its end points), the sphere starting outside r of the line and moving into it.</summary>
     public static bool Segment(Vector3 c, Vector3 d, float r, Vector3 a, Vector3 b, out float t, out Vector3 normal)
     {
         t = 0f;
@@ -111,25 +123,50 @@ public static class ReferenceToi
             return false;
         var m = c - a;
         float md = Vector3.Dot(m, e), dd = Vector3.Dot(d, e);
-        // |m⊥ + t d⊥|² = r², multiplied through by |e|².
-        float qa = l2 * Vector3.Dot(d, d) - dd * dd;
-        float qb = l2 * Vector3.Dot(m, d) - md * dd;
-        float qc = l2 * (Vector3.Dot(m, m) - r * r) - md * md;
-        if (qa <= 1e-12f * l2 || qc < 0f || qb >= 0f)
+        // The parts of the offset and of the motion across the line: |m⊥ + t d⊥|² = r².
+        var mp = m - (md / l2) * e;
+        var dp = d - (dd / l2) * e;
+        float qa = Vector3.Dot(dp, dp);
+        float qb = Vector3.Dot(mp, dp);
+        float qc = Vector3.Dot(mp, mp) - r * r;
+        if (qa <= 1e-12f || qc < 0f || qb >= 0f)
             return false;
-        float disc = qb * qb - qa * qc;
-        if (disc < 0f)
+        // qb² − qa·qc by Lagrange's identity (see Point): the old form lost every digit far from the edge.
+        float disc = qa * r * r - Vector3.Cross(mp, dp).LengthSquared();
+        if (disc <= qa * GrazeDepth(r))
             return false;
-        t = (-qb - MathF.Sqrt(disc)) / qa;
+        t = qc / (-qb + MathF.Sqrt(disc));
         if (t < 0f || t > 1f)
             return false;
         float s = (md + t * dd) / l2;
         if (s < 0f || s > 1f)
             return false;
-        var p = c + t * d;
-        var q = a + s * e;
-        normal = Vector3.Normalize(p - q);
-        return true;
+        return Approaching(mp + t * dp, d, out normal);
+    }
+
+    /// <summary>
+    /// r² − (r − slop)²: a path whose closest approach to a point or a line is more than r − <see cref="ContactSlop"/>
+    /// only grazes it (the discriminant over the squared speed is r² minus the squared closest approach). A
+    /// tangent path's discriminant is rounding, whose square root tilted the normal by 1e-3 and let a sphere
+    /// rolling along a face stop on its far edge.
+    /// </summary>
+    private static float GrazeDepth(float r)
+    {
+        float inner = MathF.Max(r - ContactSlop, 0f);
+        return r * r - inner * inner;
+    }
+
+    /// <summary>
+    /// The contact normal from the feature to the sphere's centre, and whether the sphere moves into the
+    /// feature there: a tangential graze (the motion along the surface, as a sphere rolling over an edge of
+    /// the floor it lies on) is not a contact, as for a touching start (<see cref="Resting"/>). False also
+    /// when the offset is too short to give a direction (a radius that vanishes in rounding).
+    /// </summary>
+    private static bool Approaching(Vector3 away, Vector3 d, out Vector3 normal)
+    {
+        float len = away.Length();
+        normal = len > 0f ? away / len : default;
+        return len > 0f && Vector3.Dot(normal, d) < -ApproachTolerance * d.Length();
     }
 
     /// <summary>Time of impact with a sphere obstacle.</summary>
@@ -151,51 +188,92 @@ public static class ReferenceToi
     /// Time of impact with a convex polygon: its face (from the front; from either side unless
     /// <see cref="PolygonSides.Single"/>), its edges and its vertices, whichever comes first.
     /// </summary>
-    public static bool Polygon(Vector3 c, Vector3 d, float r, Polygon polygon, out ReferenceHit hit)
+    public static bool Polygon(Vector3 c, Vector3 d, float r, Polygon polygon, out ReferenceHit hit) =>
+        Polygon(c, d, r, polygon, Vector3.Zero, out hit);
+
+    /// <summary>
+    /// <see cref="Polygon(Vector3, Vector3, float, Geometry.Polygon, out ReferenceHit)"/> for a polygon placed
+    /// <paramref name="shift"/> from the frame of <paramref name="start"/> (a neighbouring landblock's
+    /// terrain). A ray's edge test runs in the start's frame, where the shifted corners of terrain are exact, so
+    /// it stays watertight across landblock seams (shifting the start instead rounds it differently for each
+    /// landblock).
+    /// </summary>
+    internal static bool Polygon(Vector3 start, Vector3 d, float r, Polygon polygon, Vector3 shift, out ReferenceHit hit)
     {
         hit = default;
+        var c = start - shift;
         var plane = polygon.Plane;
         var n = plane.Normal;
-        float s0 = Vector3.Dot(n, c) + plane.D;
+        // Measured from a corner, not as n·c + D: far from the frame's origin D carries a rounding of several
+        // micrometres, which a ray at a grazing angle turns into millimetres along its path.
+        float s0 = Vector3.Dot(n, c - polygon.Vertices[0]);
+        float vn = Vector3.Dot(n, d);
+        bool ray = r < RayRadius;
+        // A single-sided polygon is met only from its front: a start behind it is not touching it, and an
+        // edge or corner contact counts only with the centre in front of the plane at that moment. (A start
+        // behind the plane can still reach the front: over a convex ridge of terrain, a sphere low above one
+        // face is behind the next face's plane, and lands on that face after crossing the ridge.)
+        bool behind = false;
         if (s0 < 0f)
         {
             if (polygon.Sides == PolygonSides.Single)
-                return false;
-            n = -n;
-            s0 = -s0;
+            {
+                if (ray || !(vn > 0f))
+                    return false;
+                behind = true;
+            }
+            else
+            {
+                n = -n;
+                s0 = -s0;
+                vn = -vn;
+            }
         }
-        var closest = ClosestPointOnPolygon(c, polygon);
-        var away = c - closest;
-        float dist = away.Length();
-        if (dist < r + ContactSlop)
-            return Resting(away, dist, d, n, out hit);
 
         float best = float.PositiveInfinity;
         var bestNormal = Vector3.Zero;
         var feature = ReferenceFeature.None;
-        float vn = Vector3.Dot(n, d);
-        if (vn < 0f)
+        if (!behind)
         {
-            float t = (s0 - r) / -vn;
-            if (t >= 0f && t <= 1f && Inside(c + t * d - r * n, polygon, 1e-6f))
+            // Over the face the distance is the plane's and the direction the normal, exactly: the difference
+            // of the centre and its projection, far from the frame's origin, carries the rounding of both
+            // (1e-5 rad of tilt at 200 m), enough to read a sphere rolling on the face as moving into it.
+            var projected = c - s0 * n;
+            bool overFace = Inside(projected, polygon);
+            var away = overFace ? s0 * n : c - ClosestPointOnPolygon(c, polygon);
+            float dist = overFace ? s0 : away.Length();
+            // A start touching the polygon (within the slop) is judged at once. Either way the sweep must go
+            // more than the slop into the polygon, or deeper than the slop behind its plane: a ray lying in a
+            // face's plane is within rounding of it, on either side (a tilted face's plane and a point on it
+            // are each a few micrometres off at 60 m).
+            if (dist < r + ContactSlop)
+                return Resting(ray || overFace ? n : away, ray || overFace ? 1f : dist, d, n, out hit, ContactSlop);
+
+            if (vn < -ApproachTolerance * d.Length() && s0 + vn - r < -ContactSlop)
             {
-                best = t;
-                bestNormal = n;
-                feature = ReferenceFeature.Face;
+                float t = (s0 - r) / -vn;
+                var contact = c + t * d - r * n;
+                if (t >= 0f && t <= 1f && (ray ? RayThrough(start, d, polygon, shift) : Inside(contact, polygon, InsideTolerance(contact))))
+                {
+                    best = t;
+                    bestNormal = n;
+                    feature = ReferenceFeature.Face;
+                }
             }
         }
         var v = polygon.Vertices;
-        for (int i = 0; i < v.Length; i++)
+        bool singleSided = polygon.Sides == PolygonSides.Single;
+        for (int i = 0; i < v.Length && !ray; i++)
         {
             var a = v[i];
             var b = v[(i + 1) % v.Length];
-            if (Segment(c, d, r, a, b, out float te, out var ne) && te < best)
+            if (Segment(c, d, r, a, b, out float te, out var ne) && te < best && (!singleSided || s0 + te * vn >= 0f))
             {
                 best = te;
                 bestNormal = ne;
                 feature = ReferenceFeature.Edge;
             }
-            if (Point(c, d, r, a, out float tv, out var nv) && tv < best)
+            if (Point(c, d, r, a, out float tv, out var nv) && tv < best && (!singleSided || s0 + tv * vn >= 0f))
             {
                 best = tv;
                 bestNormal = nv;
@@ -300,12 +378,12 @@ public static class ReferenceToi
         feature = ReferenceFeature.CylinderCap;
     }
 
-    /// <summary>A touching sphere: a hit at t = 0 when it moves into the shape, none otherwise.</summary>
-    private static bool Resting(Vector3 away, float dist, Vector3 d, Vector3 fallbackNormal, out ReferenceHit hit)
+    /// <summary>A touching sphere: a hit at t = 0 when it moves into the shape (by more than <paramref name="minDepth"/> over the sweep), none otherwise.</summary>
+    private static bool Resting(Vector3 away, float dist, Vector3 d, Vector3 fallbackNormal, out ReferenceHit hit, float minDepth = 0f)
     {
         var normal = dist > 1e-7f ? away / dist : fallbackNormal;
         float into = Vector3.Dot(normal, d);
-        if (into < -ApproachTolerance * d.Length())
+        if (into < -ApproachTolerance * d.Length() && into < -minDepth)
         {
             hit = new ReferenceHit(0f, normal, ReferenceFeature.Resting);
             return true;
@@ -329,6 +407,55 @@ public static class ReferenceToi
         }
         return true;
     }
+
+    /// <summary>
+    /// Whether a ray from <paramref name="c"/> along <paramref name="d"/> passes through a convex polygon
+    /// (placed <paramref name="shift"/> from the ray's frame), edges and corners included, watertight: every
+    /// corner is projected along the ray onto a plane across it (a shear, as in Woop, Benthin and Wald's
+    /// watertight ray/triangle test), and the ray passes through when the 2-D cross products of consecutive
+    /// corners all have one sign. A corner's projection is the same number in every polygon that shares it
+    /// (terrain corners shift exactly between landblocks), so the cross product of a shared edge is exactly
+    /// negated in the neighbour and a ray through an edge or a corner passes through one of the polygons
+    /// around it whatever the rounding. (Testing the plane's crossing point instead let shallow rays through
+    /// the seams of terrain: the two planes' rounding moved their crossing points up to a millimetre apart,
+    /// each outside its own triangle.)
+    /// </summary>
+    private static bool RayThrough(Vector3 c, Vector3 d, Polygon polygon, Vector3 shift)
+    {
+        float ax = MathF.Abs(d.X), ay = MathF.Abs(d.Y), az = MathF.Abs(d.Z);
+        int kz = az >= ax && az >= ay ? 2 : ay >= ax ? 1 : 0;
+        float dz = Component(d, kz);
+        float sx = Component(d, (kz + 1) % 3) / dz, sy = Component(d, (kz + 2) % 3) / dz;
+        var v = polygon.Vertices;
+        var first = Project(v[0] + shift - c, kz, sx, sy);
+        var previous = first;
+        bool below = false, above = false;
+        for (int i = 1; i <= v.Length; i++)
+        {
+            var next = i < v.Length ? Project(v[i] + shift - c, kz, sx, sy) : first;
+            float side = previous.X * next.Y - previous.Y * next.X;
+            below |= side < 0f;
+            above |= side > 0f;
+            previous = next;
+        }
+        return !(below && above);
+    }
+
+    private static Vector2 Project(Vector3 p, int kz, float sx, float sy)
+    {
+        float z = Component(p, kz);
+        return new Vector2(Component(p, (kz + 1) % 3) - sx * z, Component(p, (kz + 2) % 3) - sy * z);
+    }
+
+    private static float Component(Vector3 v, int k) => k == 0 ? v.X : k == 1 ? v.Y : v.Z;
+
+    /// <summary>
+    /// How far outside a polygon's edges a face contact still counts: 1 µm plus four float steps of the
+    /// contact's largest coordinate, the rounding of the contact point itself (at 200 m from the frame's
+    /// origin a float step is 15 µm, so a fixed 1 µm let a ray through the seam of two terrain triangles).
+    /// </summary>
+    private static float InsideTolerance(Vector3 p) =>
+        1e-6f + 4.8e-7f * MathF.Max(MathF.Max(MathF.Abs(p.X), MathF.Abs(p.Y)), MathF.Abs(p.Z));
 
     /// <summary>The point of a convex polygon closest to <paramref name="p"/>.</summary>
     public static Vector3 ClosestPointOnPolygon(Vector3 p, Polygon polygon)

@@ -34,7 +34,7 @@ public static class SceneLoader
     public static Scene LoadFile(string path)
     {
         ArgumentNullException.ThrowIfNull(path);
-        return Load(File.ReadAllText(path), Path.GetFileNameWithoutExtension(path));
+        return Load(BoundedFile.ReadText(path, BoundedFile.MaxSceneBytes, "scene file"), Path.GetFileNameWithoutExtension(path));
     }
 
     /// <summary>Loads a scene from its JSON text.</summary>
@@ -86,11 +86,13 @@ public static class SceneLoader
                 throw new SceneFormatException("landblocks", "a scene needs at least one landblock.");
             var envCells = o.Array("envCells", optional: true);
             var pendingPortals = new List<(CellPortal Portal, string Path)>();
+            var cells = new List<EnvCell>();
             foreach (var (value, path) in envCells)
-                ReadEnvCell(value, path, pendingPortals);
+                ReadEnvCell(value, path, pendingPortals, cells);
             foreach (var (portal, path) in pendingPortals)
-                if (!portal.LeadsOutside && _world.Cells.Get(portal.OtherCellId) is null)
+                if (!portal.LeadsOutside && _world.Cells.Get(portal.OtherCellId) is null && !cells.Exists(c => c.Id == portal.OtherCellId))
                     throw new SceneFormatException(path, $"unknown cell 0x{portal.OtherCellId:X8}.");
+            Checked("envCells", () => _world.Cells.AddEnvCells(cells));
             foreach (var (value, path) in o.Array("buildings", optional: true))
                 ReadBuilding(value, path);
             foreach (var (value, path) in o.Array("objects", optional: true))
@@ -318,12 +320,15 @@ public static class SceneLoader
             uint id = o.Id("id");
             if (id > 0xFFFF)
                 throw new SceneFormatException(o.Child("id"), $"0x{id:X} is not a 16-bit landblock id.");
+            Checked(o.Child("id"), () => Guard.LandblockInWorld(id, o.Child("id")));
             Terrain terrain;
             if (o.Has("height") == o.Has("heights"))
                 throw new SceneFormatException(path, "a landblock needs exactly one of \"height\" (flat) or \"heights\" (81 values, [x * 9 + y]).");
             if (o.Opt("height") is { } h)
             {
-                terrain = Terrain.Flat(id, JsonRead.Float(h, o.Child("height")));
+                float height = JsonRead.Float(h, o.Child("height"));
+                Checked(o.Child("height"), () => Guard.Coordinate(height, o.Child("height")));
+                terrain = Terrain.Flat(id, height);
             }
             else
             {
@@ -333,14 +338,14 @@ public static class SceneLoader
                 var heights = new float[items.Count];
                 for (int i = 0; i < items.Count; i++)
                     heights[i] = JsonRead.Float(items[i].Value, items[i].Path);
-                terrain = new Terrain(id, heights, path);
+                terrain = Checked(path, () => new Terrain(id, heights, path));
             }
             o.End();
             Checked(o.Child("id"), () => _world.Cells.AddLandblock(terrain));
             _landblocks.Add(id);
         }
 
-        private void ReadEnvCell(JsonElement e, string path, List<(CellPortal, string)> pending)
+        private void ReadEnvCell(JsonElement e, string path, List<(CellPortal, string)> pending, List<EnvCell> cells)
         {
             var o = new JsonObj(e, path);
             uint id = o.Id("id");
@@ -365,7 +370,9 @@ public static class SceneLoader
             o.End();
             if (!_landblocks.Contains(LandDefs.Landblock(id)))
                 throw new SceneFormatException(o.Child("id"), $"cell 0x{id:X8} is not in a landblock of the scene.");
-            Checked(o.Child("id"), () => _world.Cells.AddEnvCell(new EnvCell(id, frame, physics, cellBsp, portals)));
+            if (_world.Cells.Get(id) is not null || cells.Exists(c => c.Id == id))
+                throw new SceneFormatException(o.Child("id"), $"cell 0x{id:X8}: is already in the world.");
+            cells.Add(Checked(o.Child("id"), () => new EnvCell(id, frame, physics, cellBsp, portals)));
         }
 
         private void ReadBuilding(JsonElement e, string path)

@@ -237,7 +237,7 @@ public sealed class Trajectory
 
     /// <summary>Reads a trajectory file from disk.</summary>
     /// <exception cref="SceneFormatException">The file is malformed (the message starts with the JSON path).</exception>
-    public static Trajectory LoadFile(string path) => Parse(File.ReadAllText(path));
+    public static Trajectory LoadFile(string path) => Parse(BoundedFile.ReadText(path, BoundedFile.MaxTrajectoryBytes, "trajectory file"));
 
     /// <summary>Reads a trajectory from its JSON text, strictly (unknown fields are errors).</summary>
     /// <exception cref="SceneFormatException">The text is malformed (the message starts with the JSON path).</exception>

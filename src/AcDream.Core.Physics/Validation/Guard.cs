@@ -118,15 +118,20 @@ internal static class Guard
             throw new ArgumentException($"{Name(field, suffix)}: quaternion must be finite, got {q}.", Name(field, suffix));
         if (Physics.Frame.IsValidRotation(q))
             return q;
-        float length = q.Length();
-        if (length < 1e-6f)
+        // Retail's set_rotate normalizes any length by its reciprocal in double (x87), where the squares of
+        // tiny float components do not underflow: a finite rotation of length 1.4e-19 is a valid rotation
+        // there, normalized the same way here (Frame.SetRotate). Only a length of exactly zero has no
+        // direction (retail's reciprocal is then infinite and set_rotate keeps the old rotation).
+        if ((double)q.X * q.X + (double)q.Y * q.Y + (double)q.Z * q.Z + (double)q.W * q.W == 0.0)
             throw new ArgumentException($"{Name(field, suffix)}: quaternion has zero length.", Name(field, suffix));
         // A length that overflows float (components near 1e19 or more) is refused rather than normalized:
         // a client that sends such a rotation has a bug, and the error says so.
-        if (!float.IsFinite(length))
+        if (!float.IsFinite(q.Length()))
             throw new ArgumentException($"{Name(field, suffix)}: quaternion is too long to normalize (its length overflows), got {q}.", Name(field, suffix));
-        var frame = default(Frame);
+        var frame = new Frame(Vector3.Zero, new Quaternion(float.NaN, float.NaN, float.NaN, float.NaN));
         frame.SetRotate(q.W, q.X, q.Y, q.Z);
+        if (!Physics.Frame.IsValidRotation(frame.Orientation))
+            throw new ArgumentException($"{Name(field, suffix)}: quaternion {q} does not normalize to a valid rotation.", Name(field, suffix));
         return frame.Orientation;
     }
 
@@ -149,7 +154,8 @@ internal static class Guard
 
     /// <summary>
     /// A position's origin lies near the cell it names: at most <see cref="InputLimits.MaxDistanceFromCell"/>
-    /// plus <paramref name="reach"/> outside it (<paramref name="distance"/> is measured by the cell).
+    /// plus <paramref name="reach"/> outside it (<paramref name="distance"/> is measured by the cell). The one
+    /// rule for movers (reach: their spheres') and registered objects (reach: their shapes').
     /// </summary>
     public static void NearCell(float distance, float reach, uint cellId, Vector3 origin, string field)
     {
@@ -160,7 +166,7 @@ internal static class Guard
     [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
     private static void ThrowFarFromCell(float distance, float reach, uint cellId, Vector3 origin, string field)
     {
-        throw new ArgumentException($"{field}: {origin} is {distance:0.#} m outside its cell 0x{cellId:X8}; a position must lie within {InputLimits.MaxDistanceFromCell} m plus the mover's reach ({reach:0.###} m) of the cell it names.", field);
+        throw new ArgumentException($"{field}: {origin} is {distance:0.#} m outside its cell 0x{cellId:X8}; a position must lie within {InputLimits.MaxDistanceFromCell} m plus the reach of its shapes ({reach:0.###} m) of the cell it names.", field);
     }
 
     /// <summary>

@@ -57,16 +57,56 @@ public sealed class CellGraph
         }
     }
 
-    /// <summary>Adds an env cell. Its portals may name cells added later.</summary>
+    /// <summary>
+    /// Adds an env cell whose portals lead outside or to cells already in the world. Cells that lead to
+    /// each other are added together with <see cref="AddEnvCells"/>.
+    /// </summary>
     public void AddEnvCell(EnvCell cell)
     {
         ArgumentNullException.ThrowIfNull(cell);
-        if (!_cells.TryAdd(cell.Id, cell))
-            throw new ArgumentException($"cell 0x{cell.Id:X8}: is already in the world.", nameof(cell));
-        uint block = cell.Id >> 16;
-        if (!_envByBlock.TryGetValue(block, out var list))
-            _envByBlock.Add(block, list = new List<EnvCell>());
-        list.Add(cell);
+        AddEnvCells([cell]);
+    }
+
+    /// <summary>
+    /// Adds env cells together, all or none: ids new to the world and to each other, and every portal
+    /// leading outside, to one of these cells or to a cell already in the world (a portal to a missing cell
+    /// is refused, naming it, as the scene loader refuses it).
+    /// </summary>
+    public void AddEnvCells(IReadOnlyList<EnvCell> cells)
+    {
+        ArgumentNullException.ThrowIfNull(cells);
+        for (int i = 0; i < cells.Count; i++)
+        {
+            var cell = cells[i] ?? throw new ArgumentNullException(nameof(cells), $"cells[{i}]: is null.");
+            if (_cells.ContainsKey(cell.Id))
+                throw new ArgumentException($"cell 0x{cell.Id:X8}: is already in the world.", nameof(cells));
+            for (int k = 0; k < i; k++)
+                if (cells[k].Id == cell.Id)
+                    throw new ArgumentException($"cell 0x{cell.Id:X8}: is given twice (cells[{k}] and cells[{i}]).", nameof(cells));
+        }
+        foreach (var cell in cells)
+            for (int p = 0; p < cell.Portals.Length; p++)
+            {
+                uint other = cell.Portals[p].OtherCellId;
+                if (!cell.Portals[p].LeadsOutside && !_cells.ContainsKey(other) && !Given(cells, other))
+                    throw new ArgumentException($"cell 0x{cell.Id:X8}.portals[{p}].otherCell: cell 0x{other:X8} is neither in the world nor added with it.", nameof(cells));
+            }
+        foreach (var cell in cells)
+        {
+            _cells.Add(cell.Id, cell);
+            uint block = cell.Id >> 16;
+            if (!_envByBlock.TryGetValue(block, out var list))
+                _envByBlock.Add(block, list = new List<EnvCell>());
+            list.Add(cell);
+        }
+    }
+
+    private static bool Given(IReadOnlyList<EnvCell> cells, uint id)
+    {
+        foreach (var cell in cells)
+            if (cell.Id == id)
+                return true;
+        return false;
     }
 
     /// <summary>True when the landblock has land cells or env cells in the world.</summary>

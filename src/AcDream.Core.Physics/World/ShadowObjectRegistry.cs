@@ -1,7 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Diagnostics.CodeAnalysis;
+using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
+using System.Threading;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
@@ -13,7 +16,10 @@ namespace AcDream.Core.Physics.World;
 /// carrying its <see cref="ShadowEntry"/> rows: one row per collision shape, an object present once in every
 /// cell it overlaps.
 /// Single writer: register, move and unregister from one thread while no query runs; queries may run in
-/// parallel when nothing is being modified.
+/// parallel when nothing is being modified. A second thread writing while one is (a caller's bug) is
+/// detected, as .NET's collections detect a modification during enumeration: its call throws
+/// <see cref="InvalidOperationException"/> before changing anything, the other completes, and the
+/// registry stays usable. Queries running during a write are not detected.
 /// </summary>
 public sealed class ShadowObjectRegistry
 {
@@ -52,6 +58,8 @@ public sealed class ShadowObjectRegistry
     private readonly Dictionary<uint, Record> _objects = new();
     private readonly CellArray _scratch = new();
     private readonly List<uint> _newCells = new(4);
+    // 1 while a thread is registering, moving or removing: a second writer meets it and throws.
+    private int _writing;
 
     /// <summary>Creates an empty registry over a world's cells.</summary>
     public ShadowObjectRegistry(CellGraph graph) => _graph = graph ?? throw new ArgumentNullException(nameof(graph));
@@ -126,6 +134,20 @@ public sealed class ShadowObjectRegistry
     internal void Register(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags = ShadowFlags.None,
         PhysicsSetup? setup = null)
     {
+        BeginWrite(nameof(Register));
+        try
+        {
+            RegisterCore(entityId, shapes, position, scale, state, flags, setup);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private void RegisterCore(uint entityId, ShadowShape[] shapes, Position position, float scale, PhysicsState state, ShadowFlags flags,
+        PhysicsSetup? setup)
+    {
         ArgumentNullException.ThrowIfNull(shapes);
         string name = $"object 0x{entityId:X8}";
         if (_objects.ContainsKey(entityId))
@@ -134,7 +156,8 @@ public sealed class ShadowObjectRegistry
             if (shapes[i] is null)
                 throw new ArgumentException($"{name}.shapes[{i}]: is null.", nameof(shapes));
         Guard.Extent(scale, false, $"{name}.scale");
-        position = CheckPosition(position, entityId);
+        var localBounds = Enclose(shapes);
+        position = CheckPosition(position, entityId, Reach(localBounds));
 
         var record = new Record
         {
@@ -146,7 +169,7 @@ public sealed class ShadowObjectRegistry
             if (shape.Kind == ShadowShapeKind.Cylinder) record.CylCount++;
             if (shape.Kind == ShadowShapeKind.Sphere) record.SphereCount++;
         }
-        record.LocalBounds = Enclose(shapes);
+        record.LocalBounds = localBounds;
         FindCells(record, _newCells);
         _objects.Add(entityId, record);
         WriteRows(record);
@@ -160,9 +183,22 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     public void Move(uint entityId, Position position)
     {
+        BeginWrite(nameof(Move));
+        try
+        {
+            MoveCore(entityId, position);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private void MoveCore(uint entityId, Position position)
+    {
         if (!_objects.TryGetValue(entityId, out var record))
             throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
-        position = CheckPosition(position, entityId);
+        position = CheckPosition(position, entityId, Reach(record.LocalBounds));
         var old = record.Position;
         record.Position = position;
         try
@@ -186,17 +222,25 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     internal void Replace(uint entityId, Position position, PhysicsState state)
     {
-        if (!_objects.TryGetValue(entityId, out var old))
-            throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
-        Unregister(entityId);
+        BeginWrite(nameof(Replace));
         try
         {
-            Register(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags, old.Setup);
+            if (!_objects.TryGetValue(entityId, out var old))
+                throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
+            UnregisterCore(entityId);
+            try
+            {
+                RegisterCore(entityId, old.Shapes, position, old.Scale, state | (old.State & PhysicsState.HasPhysicsBsp), old.Flags, old.Setup);
+            }
+            catch
+            {
+                RegisterCore(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags, old.Setup);
+                throw;
+            }
         }
-        catch
+        finally
         {
-            Register(entityId, old.Shapes, old.Position, old.Scale, old.State, old.Flags, old.Setup);
-            throw;
+            EndWrite();
         }
     }
 
@@ -206,11 +250,38 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     public bool Unregister(uint entityId)
     {
+        BeginWrite(nameof(Unregister));
+        try
+        {
+            return UnregisterCore(entityId);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private bool UnregisterCore(uint entityId)
+    {
         if (!_objects.Remove(entityId, out var record))
             return false;
         RemoveFromCells(record);
         return true;
     }
+
+    /// <summary>Takes the writer's flag; a thread that finds it taken throws before changing anything.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void BeginWrite(string operation)
+    {
+        if (Interlocked.CompareExchange(ref _writing, 1, 0) != 0)
+            ThrowConcurrentWrite(operation);
+    }
+
+    private void EndWrite() => Volatile.Write(ref _writing, 0);
+
+    [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
+    private static void ThrowConcurrentWrite(string operation) =>
+        throw new InvalidOperationException($"ShadowObjectRegistry.{operation}: another thread is modifying the registry; it takes one writer at a time. This call changed nothing.");
 
     /// <summary>
     /// Takes every row listed in a landblock's cells (land and env cells) out of the registry, before the
@@ -221,11 +292,19 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     internal void DropLandblock(uint landblock)
     {
-        Version++;
-        for (uint i = 1; i <= 64; i++)
-            DropCell((landblock << 16) | i);
-        foreach (var env in _graph.EnvCellsOf(landblock))
-            DropCell(env.Id);
+        BeginWrite(nameof(DropLandblock));
+        try
+        {
+            Version++;
+            for (uint i = 1; i <= 64; i++)
+                DropCell((landblock << 16) | i);
+            foreach (var env in _graph.EnvCellsOf(landblock))
+                DropCell(env.Id);
+        }
+        finally
+        {
+            EndWrite();
+        }
     }
 
     private void DropCell(uint cellId)
@@ -259,6 +338,19 @@ public sealed class ShadowObjectRegistry
     /// in the registry's order, which depends only on the order of registrations and removals.
     /// </summary>
     internal void ListInLandblock(uint landblock)
+    {
+        BeginWrite(nameof(ListInLandblock));
+        try
+        {
+            ListInLandblockCore(landblock);
+        }
+        finally
+        {
+            EndWrite();
+        }
+    }
+
+    private void ListInLandblockCore(uint landblock)
     {
         Version++;
         int bx = (int)(landblock >> 8), by = (int)(landblock & 0xFF);
@@ -328,18 +420,29 @@ public sealed class ShadowObjectRegistry
     public Position PositionOf(uint entityId) =>
         _objects.TryGetValue(entityId, out var record) ? record.Position : throw new ArgumentException($"object 0x{entityId:X8}: is not registered.", nameof(entityId));
 
-    /// <summary>Validates a position; the field names (which hold the id) are built only when a check fails.</summary>
-    private Position CheckPosition(Position position, uint entityId)
+    /// <summary>
+    /// Validates a position: a valid frame, a cell in the world, and an origin near that cell (the movers'
+    /// rule, <see cref="Guard.NearCell"/>: the cell an object names decides which cells list it, so a wrong
+    /// label changed the physics). The field names (which hold the id) are built only when a check fails.
+    /// </summary>
+    private Position CheckPosition(Position position, uint entityId, float reach)
     {
-        if (!Guard.IsValidFrame(position.Frame) || _graph.Get(position.CellId) is null)
+        var cell = _graph.Get(position.CellId);
+        if (!Guard.IsValidFrame(position.Frame) || cell is null)
         {
             string name = $"object 0x{entityId:X8}";
             Guard.Frame(position.Frame, $"{name}.position");
-            _graph.GetRequired(position.CellId, $"{name}.position.cell");
+            cell = _graph.GetRequired(position.CellId, $"{name}.position.cell");
         }
+        float outside = cell.DistanceOutside(position.Frame.Origin);
+        if (!(outside <= InputLimits.MaxDistanceFromCell + reach))
+            Guard.NearCell(outside, reach, position.CellId, position.Frame.Origin, $"object 0x{entityId:X8}.position.origin");
         position.Frame.Orientation = Guard.Rotation(position.Frame.Orientation, "position.orientation");
         return position;
     }
+
+    /// <summary>How far an object's shapes reach from its origin (its shapes are scaled already).</summary>
+    private static float Reach(in Sphere localBounds) => localBounds.Center.Length() + localBounds.Radius;
 
     private static Sphere Enclose(ShadowShape[] shapes)
     {

@@ -225,6 +225,12 @@ public class BadInputTests
         ["H15"] = new("PhysicsEngine.Place", "position 10 km outside its landblock", "position.origin", f => new PhysicsEngine(f.World).Place(f.Player, f.Offset(new Vector3(0, 10_000f, 0)))),
         ["H16"] = new("BspTree.Create", $"a chain of {InputLimits.MaxBspDepth + 1} nodes (deeper than InputLimits.MaxBspDepth)", $"gfx.nodes[{InputLimits.MaxBspDepth}]", _ => BspTree.Create([Quad()], Chain(InputLimits.MaxBspDepth + 1), "gfx")),
         ["H17"] = new("BspCompiler.Compile", $"more than InputLimits.MaxCompilePolygons polygons", "gfx: at most", _ => BspCompiler.Compile(Enumerable.Repeat(Quad(), InputLimits.MaxCompilePolygons + 1).ToArray(), "gfx")),
+        // Issue 24: limits the docs stated and the code skipped.
+        ["H18"] = new("BspTree.Create", "split plane distance 1e30", "gfx.nodes[0].splitPlane.d", _ => BspTree.Create([Quad()], [Split(1, -1, new Plane(Vector3.UnitZ, 1e30f)), Leaf(0)], "gfx")),
+        ["H19"] = new("Registry.Register(setup)", "position 76 m outside the cell it names (a 0.5 m ball: reach 0.5 m)", "object 0x00000003.position.origin", f => f.World.Objects.Register(3, Ball(0.5f), new Position(TestGeometry.At(12, 12, 0).CellId, new Vector3(12, 100, 0)))),
+        ["H20"] = new("Registry.Move", "position 5 km outside the cell it names", "object 0x00000002.position.origin", f => f.World.Objects.Move(2, new Position(TestGeometry.At(12, 12, 0).CellId, new Vector3(12, 5000, 0)))),
+        ["H21"] = new("CellGraph.AddEnvCell", "a portal to a cell not in the world", "cell 0xA9B40101.portals[0].otherCell", f => f.World.Cells.AddEnvCell(new EnvCell(0xA9B40101, new Frame(new Vector3(80, 80, -20)), null, CellBox(), [new CellPortal(Quad(), 0xA9B40177, true)]))),
+        ["H22"] = new("CellGraph.AddEnvCells", "the same id twice", "cell 0xA9B40102: is given twice", f => f.World.Cells.AddEnvCells([new EnvCell(0xA9B40102, Frame.Identity, null, CellBox()), new EnvCell(0xA9B40102, Frame.Identity, null, CellBox())])),
     };
 
     private static readonly Quaternion Huge = new(1e20f, 1e20f, 0f, 1e20f);
@@ -280,6 +286,26 @@ public class BadInputTests
         var fresh = new Fixture();
         var expected = fresh.Resolve(fresh.State, fresh.Target);
         Assert.Equal(expected.Next, after.Next);
+    }
+
+    [Fact]
+    public void ATinyFiniteRotation_IsNormalizedAsRetailsSetRotateDoes_NotRefusedAsZeroLength()
+    {
+        // Length 1.41e-19: retail's Frame::set_rotate divides by the length in double, where the squares
+        // (2e-38) do not underflow, and gets the unit rotation of the same direction: 45° about X.
+        var tiny = new Quaternion(1e-19f, 0f, 0f, 1e-19f);
+        var f = new Fixture();
+        f.World.Objects.Register(3, Ball(0.5f), new Position(TestGeometry.At(30, 30, 0).CellId, new Frame(new Vector3(30, 30, 0), tiny)));
+        Assert.Equal(new Quaternion(0.70710677f, 0f, 0f, 0.70710677f), f.World.Objects.PositionOf(3).Frame.Orientation);
+        var state = f.State;
+        state.Position.Frame.Orientation = tiny;
+        var target = f.Target;
+        target.Frame.Orientation = tiny;
+        var moved = f.Resolve(state, target);
+        Assert.Equal(new Quaternion(0.70710677f, 0f, 0f, 0.70710677f), moved.Next.Position.Frame.Orientation);
+        // Exactly zero has no direction: still refused, naming the field.
+        var zero = Assert.Throws<ArgumentException>(() => f.World.Objects.Move(3, new Position(TestGeometry.At(30, 30, 0).CellId, new Frame(new Vector3(30, 30, 0), default))));
+        Assert.Contains("position.orientation: quaternion has zero length", zero.Message);
     }
 
     [Fact]

@@ -62,6 +62,21 @@ public class ToolHostileInputTests
         Assert.StartsWith($"acdream-physics: FILE: movers[{movers - 1}].motion: the scene's movers walk more than {InputLimits.MaxSceneFrames} frames", err);
     }
 
+    [Theory]
+    [InlineData("{ \"id\": \"0xFFFF\", \"height\": 0 }", "acdream-physics: FILE: landblocks[0].id: landblock 0xFFFF is outside the retail world")]
+    [InlineData("{ \"id\": \"0xA9B4\", \"height\": 1e6 }", "acdream-physics: FILE: landblocks[0].height: must be finite and within ±100000 m, got 1000000.")]
+    [InlineData("{ \"id\": \"0xA9B4\", \"heights\": [0, 0, 0, 0, 0, 1e6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0] }", "acdream-physics: FILE: landblocks[0].heights[5]: must be finite and within ±100000 m, got 1000000.")]
+    public void ALandblockOutsideTheWorld_OrAHeightOutOfRange_IsReportedWithTheFileAndTheJsonPath(string landblock, string expected)
+    {
+        var (code, output, err) = RunScene($$"""
+            { "version": 1, "landblocks": [{{landblock}}], "movers": [] }
+            """);
+        Assert.Equal(2, code);
+        Assert.Equal("", output);
+        Assert.Single(err.TrimEnd().Split('\n'));
+        Assert.StartsWith(expected, err);
+    }
+
     [Fact]
     public void AStartStateFarFromItsCell_IsReportedWithTheFileAndTheMoversPath()
     {

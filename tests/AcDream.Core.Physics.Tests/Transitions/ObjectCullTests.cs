@@ -73,4 +73,33 @@ public class ObjectCullTests
 
         Assert.Contains(BarrelId, player.Frames[^1].Collided);
     }
+
+    [Fact]
+    public void AnObjectAcrossALandblockSeam_IsHit()
+    {
+        // A 0.5 m ball 1 m east of the seam between landblocks 0xA9B4 and 0xAAB4 (global x 193 from
+        // 0xA9B4's corner), centre 0.5 m up; the player walks east at it from x 190 in 0xA9B4. Its lower
+        // sphere (0.48 m at 0.475 m) must stop touching the ball: centres at least 0.98 m apart.
+        var world = new PhysicsWorld();
+        world.Cells.AddLandblock(Physics.World.Terrain.Flat(0xA9B4, 0f));
+        world.Cells.AddLandblock(Physics.World.Terrain.Flat(0xAAB4, 0f));
+        var ballAt = Position.Outdoor(0xAAB4, new Vector3(1, 100, 0.5f));
+        world.Objects.Register(7, new PhysicsSetup { Spheres = [new Sphere(Vector3.Zero, 0.5f)] }, ballAt);
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player();
+        var state = MoverState.OnFloor(Position.Outdoor(0xA9B4, new Vector3(190, 100, 0)), 0f);
+        bool hit = false;
+        for (int frame = 0; frame < 12; frame++)
+        {
+            var target = state.Position;
+            target.Frame.Origin.X += 0.3f;
+            var result = engine.Resolve(player, state, target);
+            state = result.Next;
+            hit |= result.CollidedObjects.Span.Contains(7u);
+            var lower = state.Position.ToGlobal() + new Vector3(0, 0, 0.475f);
+            float apart = Vector3.Distance(lower, ballAt.ToGlobal());
+            Assert.True(apart >= 0.98f - 1e-3f, $"frame {frame}: the player's sphere is {0.98f - apart} m inside the ball at {state.Position}");
+        }
+        Assert.True(hit, "the player never touched the ball across the seam");
+    }
 }
