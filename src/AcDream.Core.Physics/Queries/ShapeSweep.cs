@@ -142,7 +142,7 @@ internal static class ShapeSweep
     /// <paramref name="b"/> (the start and the best contact so far) misses the polygon's box widened by
     /// <paramref name="grow"/> (radius + contact slop + slack). An accepted contact has its centre on that
     /// segment within radius + slop of the polygon, so inside the widened box: every contact
-    /// <see cref="ReferenceToi.Polygon"/> could report that <see cref="Best.Offer"/> would keep passes; the
+    /// <see cref="ReferenceToi.Polygon(Vector3, Vector3, float, Polygon, out Reference.ReferenceHit)"/> could report that <see cref="Best.Offer"/> would keep passes; the
     /// rest would cost the exact test's closest point, face, edges and vertices for nothing. A slab test
     /// (a diagonal cast's own box holds far more polygons than the cast comes near), with the entry and exit
     /// fractions compared with a margin far above their rounding.
