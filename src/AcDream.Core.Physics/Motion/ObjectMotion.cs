@@ -256,10 +256,5 @@ public sealed class ObjectMotion
             throw new ArgumentException($"parameters.HoldKey: must be Invalid, None or Run, got {p.HoldKey}.", "parameters");
     }
 
-    private static void CheckBody(in BodyState body)
-    {
-        var v = body.Velocity;
-        if (!(MathF.Abs(v.X) <= BodyGuard.MaxSpeed) || !(MathF.Abs(v.Y) <= BodyGuard.MaxSpeed) || !(MathF.Abs(v.Z) <= BodyGuard.MaxSpeed))
-            throw new ArgumentException($"body.velocity: must be finite and within ±{BodyGuard.MaxSpeed} per second on each axis, got {v}.", nameof(body));
-    }
+    private static void CheckBody(in BodyState body) => BodyGuard.Velocity(body.Velocity, "body.velocity", nameof(body));
 }
