@@ -323,7 +323,7 @@ internal sealed class Sequence
         offset = offset.Combine(new Frame(root.Origin, root.Orientation));
     }
 
-    // Frame::subtract1 (CFrame.c:357321): the frame's turn undone, then its move taken away through the resulting rotation.
+    // Frame::subtract1 (CFrame.c, acclient.c:357321): the frame's turn undone, then its move taken away through the resulting rotation.
     private static void SubtractRootFrame(ref Frame offset, Animation animation, int frame)
     {
         if (!animation.HasRootFrames || (uint)frame >= (uint)animation.RootFrameCount)
