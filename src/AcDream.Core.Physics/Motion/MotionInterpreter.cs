@@ -430,13 +430,11 @@ internal sealed class MotionInterpreter
     /// <summary>CMotionInterp::charge_jump: refused while falling or sitting; a standing jump from rest is a standing long jump.</summary>
     public MotionError ChargeJump()
     {
-        if (_skills is not null && !_skills.CanJump(JumpExtent))
-            return MotionError.CantJumpLoadedDown;
-        // Retail tests Fallen and Crouch..Sleeping (CMotionInterp.c:569-604); ACE tests Falling and stops before Sleeping.
-        uint forward = Interpreted.ForwardCommand;
-        if (forward == MotionCommand.Fallen || forward >= MotionCommand.Crouch && forward <= MotionCommand.Sleeping)
-            return MotionError.CantJumpFromThisPosition;
-        if (Body.Contact && Body.OnWalkable && forward == MotionCommand.Ready && Interpreted.SideStepCommand == 0 && Interpreted.TurnCommand == 0)
+        var error = JumpChargeIsAllowed();
+        if (error != MotionError.None)
+            return error;
+        if (Body.Contact && Body.OnWalkable && Interpreted.ForwardCommand == MotionCommand.Ready && Interpreted.SideStepCommand == 0
+            && Interpreted.TurnCommand == 0)
             StandingLongJump = true;
         return MotionError.None;
     }
@@ -473,6 +471,9 @@ internal sealed class MotionInterpreter
         return error;
     }
 
+    // CMotionInterp::jump_charge_is_allowed (acclient.c:343317): the owner's CanJump, then the position; charge_jump
+    // (acclient.c:343844) makes the same two tests inline. Retail tests Fallen and Crouch..Sleeping
+    // (CMotionInterp.c:569-604); ACE tests Falling and stops before Sleeping.
     private MotionError JumpChargeIsAllowed()
     {
         if (_skills is not null && !_skills.CanJump(JumpExtent))
