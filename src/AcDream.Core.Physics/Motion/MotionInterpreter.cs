@@ -44,7 +44,6 @@ internal sealed class MotionInterpreter
     public bool StandingLongJump;
     public float JumpExtent;
     public float MyRunRate = 1f;
-    public float CurrentSpeedFactor = 1f;
     /// <summary>CPhysicsObj::movement_is_autonomous: the last command came from the object's own controls (DoMotion/StopMotion).</summary>
     public bool Autonomous;
 
