@@ -255,7 +255,8 @@ internal sealed class MotionInterpreter
         }
     }
 
-    private float RunRate() => _skills is not null && _skills.TryRunRate(out float r) ? r : MyRunRate;
+    /// <summary>The run rate apply_run_to_command, get_state_velocity and get_max_speed use: the owner's InqRunRate, else <see cref="MyRunRate"/>.</summary>
+    public float RunRate() => _skills is not null && _skills.TryRunRate(out float r) ? r : MyRunRate;
 
     // ---- re-applying the state ----
 

@@ -76,16 +76,7 @@ public sealed class ObjectMotion
         (uint)index < (uint)_sequence.Count ? (_sequence[index].Animation.Id, _sequence[index].Framerate) : throw new ArgumentOutOfRangeException(nameof(index));
 
     /// <summary>The run rate in effect (the skills' answer, else the last run speed seen).</summary>
-    public float RunRate
-    {
-        get
-        {
-            uint m = MotionCommand.WalkForward;
-            float s = 1f;
-            _interp.ApplyRunToCommand(ref m, ref s);
-            return s;
-        }
-    }
+    public float RunRate => _interp.RunRate();
 
     /// <summary>CMotionInterp::get_state_velocity: the interpreted state's speed in body axes, m/s (what a jump carries into the air).</summary>
     public Vector3 StateVelocity => _interp.StateVelocity();
