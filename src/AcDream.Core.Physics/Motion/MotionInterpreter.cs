@@ -16,6 +16,9 @@ internal sealed class MotionInterpreter
     public const float WalkAnimSpeed = 3.12f, RunAnimSpeed = 4f, SidestepAnimSpeed = 1.25f, BackwardsFactor = 0.65f,
         SidestepFactor = 0.5f, RunTurnFactor = 1.5f, MaxSidestepAnimRate = 3f;
 
+    // The chat-emote bit of a command id (ACE CommandMasks.ChatEmote): DoMotion refuses such commands in a combat style.
+    private const uint ChatEmoteMask = 0x02000000;
+
     /// <summary>What the interpreter reads and writes of the physics object (CPhysicsObj).</summary>
     internal struct BodyView
     {
@@ -87,7 +90,7 @@ internal sealed class MotionInterpreter
                 case MotionCommand.Sitting: return MotionError.CantSitInCombat;
                 case MotionCommand.Sleeping: return MotionError.CantLieDownInCombat;
             }
-            if ((motion & 0x02000000) != 0)
+            if ((motion & ChatEmoteMask) != 0)
                 return MotionError.CantChatEmoteInCombat;
         }
         if ((motion & MotionCommandMask.Action) != 0 && _manager.State.ActionCount >= 6)
