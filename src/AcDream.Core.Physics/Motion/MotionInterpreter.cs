@@ -57,8 +57,6 @@ internal sealed class MotionInterpreter
         manager.Interpreter = this;
     }
 
-    public int PendingCount => _pendingCount;
-
     /// <summary>CMotionInterp::enter_default_state: default states, the table's default cycle, then LeaveGround.</summary>
     public void EnterDefaultState()
     {
