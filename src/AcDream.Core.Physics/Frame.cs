@@ -97,7 +97,7 @@ public struct Frame
     }
 
     /// <summary>
-    /// Takes a child frame back off (retail Frame::subtract1, CFrame.c:357321, the exact inverse of
+    /// Takes a child frame back off (retail Frame::subtract1, CFrame.c at acclient.c:357321, the exact inverse of
     /// <see cref="Combine"/>): the rotation this × child⁻¹ in retail's order, normalized as set_rotate does,
     /// then the child's origin rotated by that new rotation and taken away. (ACE's AFrame.Subtract rotates the
     /// child's origin by the child's own rotation instead.)

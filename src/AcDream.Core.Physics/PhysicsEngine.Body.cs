@@ -130,7 +130,6 @@ public sealed partial class PhysicsEngine
         }
         if (pending <= PhysicsConstants.MaxQuantum)
         {
-            b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
             Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, motion, ref last);
             quanta = 1;
             pending = 0;
@@ -139,7 +138,6 @@ public sealed partial class PhysicsEngine
         {
             do
             {
-                b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
                 Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, motion, ref last);
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
@@ -147,7 +145,6 @@ public sealed partial class PhysicsEngine
             while (pending > PhysicsConstants.MaxQuantum);
             if (pending > PhysicsConstants.MinQuantum)
             {
-                b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
                 Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, motion, ref last);
                 quanta++;
                 pending = 0;
@@ -174,6 +171,7 @@ public sealed partial class PhysicsEngine
     private void Quantum(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
         Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
     {
+        b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
         QuantumCore(mover, ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
         // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
         motion?.HandleMovement();

@@ -29,10 +29,14 @@ internal static class BodyGuard
         Fraction(body.Elasticity, "body.elasticity");
     }
 
-    private static void Velocity(Vector3 v, string field)
+    /// <summary>
+    /// A velocity (or omega) finite and within <see cref="MaxSpeed"/> on each axis; the exception names
+    /// <paramref name="field"/> and, as its parameter, <paramref name="paramName"/> (default: the field).
+    /// </summary>
+    public static void Velocity(Vector3 v, string field, string? paramName = null)
     {
         if (!(MathF.Abs(v.X) <= MaxSpeed) || !(MathF.Abs(v.Y) <= MaxSpeed) || !(MathF.Abs(v.Z) <= MaxSpeed))
-            throw new ArgumentException($"{field}: must be finite and within ±{MaxSpeed} per second on each axis, got {v}.", field);
+            throw new ArgumentException($"{field}: must be finite and within ±{MaxSpeed} per second on each axis, got {v}.", paramName ?? field);
     }
 
     private static void Fraction(float value, string field)

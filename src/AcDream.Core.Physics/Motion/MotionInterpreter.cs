@@ -16,6 +16,9 @@ internal sealed class MotionInterpreter
     public const float WalkAnimSpeed = 3.12f, RunAnimSpeed = 4f, SidestepAnimSpeed = 1.25f, BackwardsFactor = 0.65f,
         SidestepFactor = 0.5f, RunTurnFactor = 1.5f, MaxSidestepAnimRate = 3f;
 
+    // The chat-emote bit of a command id (ACE CommandMasks.ChatEmote): DoMotion refuses such commands in a combat style.
+    private const uint ChatEmoteMask = 0x02000000;
+
     /// <summary>What the interpreter reads and writes of the physics object (CPhysicsObj).</summary>
     internal struct BodyView
     {
@@ -44,7 +47,6 @@ internal sealed class MotionInterpreter
     public bool StandingLongJump;
     public float JumpExtent;
     public float MyRunRate = 1f;
-    public float CurrentSpeedFactor = 1f;
     /// <summary>CPhysicsObj::movement_is_autonomous: the last command came from the object's own controls (DoMotion/StopMotion).</summary>
     public bool Autonomous;
 
@@ -54,8 +56,6 @@ internal sealed class MotionInterpreter
         _skills = skills;
         manager.Interpreter = this;
     }
-
-    public int PendingCount => _pendingCount;
 
     /// <summary>CMotionInterp::enter_default_state: default states, the table's default cycle, then LeaveGround.</summary>
     public void EnterDefaultState()
@@ -88,7 +88,7 @@ internal sealed class MotionInterpreter
                 case MotionCommand.Sitting: return MotionError.CantSitInCombat;
                 case MotionCommand.Sleeping: return MotionError.CantLieDownInCombat;
             }
-            if ((motion & 0x02000000) != 0)
+            if ((motion & ChatEmoteMask) != 0)
                 return MotionError.CantChatEmoteInCombat;
         }
         if ((motion & MotionCommandMask.Action) != 0 && _manager.State.ActionCount >= 6)
@@ -256,7 +256,8 @@ internal sealed class MotionInterpreter
         }
     }
 
-    private float RunRate() => _skills is not null && _skills.TryRunRate(out float r) ? r : MyRunRate;
+    /// <summary>The run rate apply_run_to_command, get_state_velocity and get_max_speed use: the owner's InqRunRate, else <see cref="MyRunRate"/>.</summary>
+    public float RunRate() => _skills is not null && _skills.TryRunRate(out float r) ? r : MyRunRate;
 
     // ---- re-applying the state ----
 
@@ -430,13 +431,11 @@ internal sealed class MotionInterpreter
     /// <summary>CMotionInterp::charge_jump: refused while falling or sitting; a standing jump from rest is a standing long jump.</summary>
     public MotionError ChargeJump()
     {
-        if (_skills is not null && !_skills.CanJump(JumpExtent))
-            return MotionError.CantJumpLoadedDown;
-        // Retail tests Fallen and Crouch..Sleeping (CMotionInterp.c:569-604); ACE tests Falling and stops before Sleeping.
-        uint forward = Interpreted.ForwardCommand;
-        if (forward == MotionCommand.Fallen || forward >= MotionCommand.Crouch && forward <= MotionCommand.Sleeping)
-            return MotionError.CantJumpFromThisPosition;
-        if (Body.Contact && Body.OnWalkable && forward == MotionCommand.Ready && Interpreted.SideStepCommand == 0 && Interpreted.TurnCommand == 0)
+        var error = JumpChargeIsAllowed();
+        if (error != MotionError.None)
+            return error;
+        if (Body.Contact && Body.OnWalkable && Interpreted.ForwardCommand == MotionCommand.Ready && Interpreted.SideStepCommand == 0
+            && Interpreted.TurnCommand == 0)
             StandingLongJump = true;
         return MotionError.None;
     }
@@ -473,6 +472,9 @@ internal sealed class MotionInterpreter
         return error;
     }
 
+    // CMotionInterp::jump_charge_is_allowed (acclient.c:343317): the owner's CanJump, then the position; charge_jump
+    // (acclient.c:343844) makes the same two tests inline. Retail tests Fallen and Crouch..Sleeping
+    // (CMotionInterp.c:569-604); ACE tests Falling and stops before Sleeping.
     private MotionError JumpChargeIsAllowed()
     {
         if (_skills is not null && !_skills.CanJump(JumpExtent))

@@ -28,9 +28,7 @@ internal sealed class MotionTableManager
         _sequence = sequence;
     }
 
-    public MotionTable Table => _table;
     public MotionState State { get; } = new();
-    public int PendingCount => _pendingCount;
 
     /// <summary>Called for every motion whose animations are done (MotionTableManager → CPhysicsObj::MotionDone → the interpreter).</summary>
     public MotionInterpreter? Interpreter { get; set; }

@@ -76,16 +76,7 @@ public sealed class ObjectMotion
         (uint)index < (uint)_sequence.Count ? (_sequence[index].Animation.Id, _sequence[index].Framerate) : throw new ArgumentOutOfRangeException(nameof(index));
 
     /// <summary>The run rate in effect (the skills' answer, else the last run speed seen).</summary>
-    public float RunRate
-    {
-        get
-        {
-            uint m = MotionCommand.WalkForward;
-            float s = 1f;
-            _interp.ApplyRunToCommand(ref m, ref s);
-            return s;
-        }
-    }
+    public float RunRate => _interp.RunRate();
 
     /// <summary>CMotionInterp::get_state_velocity: the interpreted state's speed in body axes, m/s (what a jump carries into the air).</summary>
     public Vector3 StateVelocity => _interp.StateVelocity();
@@ -256,10 +247,5 @@ public sealed class ObjectMotion
             throw new ArgumentException($"parameters.HoldKey: must be Invalid, None or Run, got {p.HoldKey}.", "parameters");
     }
 
-    private static void CheckBody(in BodyState body)
-    {
-        var v = body.Velocity;
-        if (!(MathF.Abs(v.X) <= BodyGuard.MaxSpeed) || !(MathF.Abs(v.Y) <= BodyGuard.MaxSpeed) || !(MathF.Abs(v.Z) <= BodyGuard.MaxSpeed))
-            throw new ArgumentException($"body.velocity: must be finite and within ±{BodyGuard.MaxSpeed} per second on each axis, got {v}.", nameof(body));
-    }
+    private static void CheckBody(in BodyState body) => BodyGuard.Velocity(body.Velocity, "body.velocity", nameof(body));
 }

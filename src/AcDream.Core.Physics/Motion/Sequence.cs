@@ -210,9 +210,7 @@ internal sealed class Sequence
                 }
                 while (Math.Floor(FrameNumber) > lastFrame)
                 {
-                    AddRootFrame(ref offset, node.Animation, lastFrame);
-                    if (Math.Abs(framerate) > PhysicsConstants.Epsilon)
-                        ApplyPhysics(ref offset, 1.0 / framerate, timeElapsed);
+                    CrossFrame(ref offset, node.Animation, lastFrame, add: true, framerate, timeElapsed);
                     lastFrame++;
                 }
             }
@@ -229,9 +227,7 @@ internal sealed class Sequence
                 }
                 while (Math.Floor(FrameNumber) < lastFrame)
                 {
-                    SubtractRootFrame(ref offset, node.Animation, lastFrame);
-                    if (Math.Abs(framerate) > PhysicsConstants.Epsilon)
-                        ApplyPhysics(ref offset, 1.0 / framerate, timeElapsed);
+                    CrossFrame(ref offset, node.Animation, lastFrame, add: false, framerate, timeElapsed);
                     lastFrame--;
                 }
             }
@@ -258,18 +254,14 @@ internal sealed class Sequence
             ref var leaving = ref _nodes[Current];
             if (leaving.Framerate < 0f)
             {
-                SubtractRootFrame(ref offset, leaving.Animation, (int)FrameNumber);
-                if (MathF.Abs(leaving.Framerate) > PhysicsConstants.Epsilon)
-                    ApplyPhysics(ref offset, 1.0 / leaving.Framerate, timeElapsed);
+                CrossFrame(ref offset, leaving.Animation, (int)FrameNumber, add: false, leaving.Framerate, timeElapsed);
             }
             Current = Current + 1 < _count ? Current + 1 : FirstCyclic;
             ref var entering = ref _nodes[Current];
             FrameNumber = entering.StartingFrame;
             if (entering.Framerate > 0f)
             {
-                AddRootFrame(ref offset, entering.Animation, (int)FrameNumber);
-                if (MathF.Abs(entering.Framerate) > PhysicsConstants.Epsilon)
-                    ApplyPhysics(ref offset, 1.0 / entering.Framerate, timeElapsed);
+                CrossFrame(ref offset, entering.Animation, (int)FrameNumber, add: true, entering.Framerate, timeElapsed);
             }
         }
         else
@@ -277,18 +269,14 @@ internal sealed class Sequence
             ref var leaving = ref _nodes[Current];
             if (leaving.Framerate >= 0f)
             {
-                SubtractRootFrame(ref offset, leaving.Animation, (int)FrameNumber);
-                if (MathF.Abs(leaving.Framerate) > PhysicsConstants.Epsilon)
-                    ApplyPhysics(ref offset, 1.0 / leaving.Framerate, timeElapsed);
+                CrossFrame(ref offset, leaving.Animation, (int)FrameNumber, add: false, leaving.Framerate, timeElapsed);
             }
             Current = Current > 0 ? Current - 1 : _count - 1;
             ref var entering = ref _nodes[Current];
             FrameNumber = entering.EndingFrame;
             if (entering.Framerate < 0f)
             {
-                AddRootFrame(ref offset, entering.Animation, (int)FrameNumber);
-                if (MathF.Abs(entering.Framerate) > PhysicsConstants.Epsilon)
-                    ApplyPhysics(ref offset, 1.0 / entering.Framerate, timeElapsed);
+                CrossFrame(ref offset, entering.Animation, (int)FrameNumber, add: true, entering.Framerate, timeElapsed);
             }
         }
     }
@@ -315,6 +303,18 @@ internal sealed class Sequence
         offset.Orientation = BodyMotion.Rotate(offset.Orientation, offset.LocalToGlobalVec(w));
     }
 
+    // One frame crossed (update_internal, advance_to_next_animation): its root frame combined onto the offset (add) or
+    // taken off it, then the motions' velocity and omega over one frame's time (none at a framerate within EPSILON of 0).
+    private void CrossFrame(ref Frame offset, Animation animation, int frame, bool add, double framerate, double timeElapsed)
+    {
+        if (add)
+            AddRootFrame(ref offset, animation, frame);
+        else
+            SubtractRootFrame(ref offset, animation, frame);
+        if (Math.Abs(framerate) > PhysicsConstants.Epsilon)
+            ApplyPhysics(ref offset, 1.0 / framerate, timeElapsed);
+    }
+
     private static void AddRootFrame(ref Frame offset, Animation animation, int frame)
     {
         if (!animation.HasRootFrames || (uint)frame >= (uint)animation.RootFrameCount)
@@ -323,7 +323,7 @@ internal sealed class Sequence
         offset = offset.Combine(new Frame(root.Origin, root.Orientation));
     }
 
-    // Frame::subtract1 (CFrame.c:357321): the frame's turn undone, then its move taken away through the resulting rotation.
+    // Frame::subtract1 (CFrame.c, acclient.c:357321): the frame's turn undone, then its move taken away through the resulting rotation.
     private static void SubtractRootFrame(ref Frame offset, Animation animation, int frame)
     {
         if (!animation.HasRootFrames || (uint)frame >= (uint)animation.RootFrameCount)

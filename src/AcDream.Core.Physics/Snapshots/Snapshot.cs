@@ -81,12 +81,12 @@ public static class Snapshot
         sections[0] = w.BeginSection(ObjectsTag);
         int count = 0;
         foreach (var o in world.Objects.Records)
-            if (inGroup is null || inGroup(o.Position.CellId >> 16))
+            if (Saved(o))
                 count++;
         w.U32((uint)count);
         foreach (var o in world.Objects.Records)
         {
-            if (inGroup is not null && !inGroup(o.Position.CellId >> 16))
+            if (!Saved(o))
                 continue;
             var setup = o.Setup ?? throw new InvalidOperationException($"object 0x{o.Id:X8}: was not registered from a setup, so it has no setup key.");
             w.U32(o.Id);
@@ -100,7 +100,7 @@ public static class Snapshot
         sections[1] = w.BeginSection(CellOrderTag);
         foreach (var o in world.Objects.Records)
         {
-            if (inGroup is not null && !inGroup(o.Position.CellId >> 16))
+            if (!Saved(o))
                 continue;
             int n = Math.Min(o.Cells.Count, byte.MaxValue);
             w.Byte((byte)n);
@@ -111,6 +111,9 @@ public static class Snapshot
             }
         }
         return w.Finish(sections);
+
+        // An object is saved when it stands in a landblock of the group (every object without a group).
+        bool Saved(World.ShadowObjectRegistry.Record o) => inGroup is null || inGroup(o.Position.CellId >> 16);
     }
 
     /// <summary>
