@@ -256,8 +256,12 @@ internal sealed class MotionInterpreter
         }
     }
 
-    /// <summary>The run rate apply_run_to_command, get_state_velocity and get_max_speed use: the owner's InqRunRate, else <see cref="MyRunRate"/>.</summary>
-    public float RunRate() => _skills is not null && _skills.TryRunRate(out float r) ? r : MyRunRate;
+    /// <summary>
+    /// The run rate apply_run_to_command, get_state_velocity and get_max_speed use (CMotionInterp.c:163-234):
+    /// 1 for an object without skills (retail: no weenie object), else the owner's InqRunRate, else
+    /// <see cref="MyRunRate"/> (which apply_interpreted_movement sets from a run's forward speed).
+    /// </summary>
+    public float RunRate() => _skills is null ? 1f : _skills.TryRunRate(out float r) ? r : MyRunRate;
 
     // ---- re-applying the state ----
 

@@ -42,6 +42,24 @@ public class MotionInterpreterTests
     }
 
     [Fact]
+    public void WithoutSkills_TheRunRateIs1_EvenAfterARunAtSpeed2()
+    {
+        // CMotionInterp::apply_run_to_command / get_max_speed: no weenie object → rate 1.0; my_run_rate (set from a
+        // run's forward speed) is read only when the owner exists but gives no rate.
+        var rig = new MotionRig();
+        var motion = new ObjectMotion(MotionTables.Humanoid());
+        motion.Place(rig.Mover, rig.State, ref rig.Body);
+        motion.DoMotion(MotionCommand.WalkForward, new MotionParameters(2f, HoldKey.Run), rig.Mover, ref rig.State, ref rig.Body);
+        Assert.Equal(MotionCommand.RunForward, motion.Interpreted.ForwardCommand);
+        Assert.Equal(2f, motion.Interpreted.ForwardSpeed);   // 2 × rate 1
+        // A landing (HitGround → apply_current_movement → apply_interpreted_movement) sets my_run_rate to 2.
+        motion.Place(rig.Mover, rig.State, ref rig.Body);
+        Assert.Equal(4f, motion.MaxSpeed);                   // 4 m/s × rate 1, not × my_run_rate
+        motion.DoMotion(MotionCommand.WalkForward, new MotionParameters(1f, HoldKey.Run), rig.Mover, ref rig.State, ref rig.Body);
+        Assert.Equal(1f, motion.Interpreted.ForwardSpeed);   // 1 × rate 1
+    }
+
+    [Fact]
     public void SideStepWithTheRunKey_IsCappedAtThree()
     {
         var rig = new MotionRig(runSkill: 800); // rate 4.5: 1.248 × 4.5 = 5.616 → 3
