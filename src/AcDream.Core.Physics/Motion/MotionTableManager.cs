@@ -411,15 +411,34 @@ internal sealed class MotionTableManager
     // as many times as there were modifiers (retail re-applies the head each time).
     private void ReModify()
     {
-        int n = State.ModifierCount;
-        for (int k = 0; k < n && State.ModifierCount > 0; k++)
+        // Not retail: a bound on re_modify's nesting. A table whose turn or sidestep cycle may replace a moving
+        // substate (bitfield without 2) makes GetObjectSequence push the old substate back as a modifier, whose
+        // re-giving makes it the substate again, and so on: retail's CMotionTable::re_modify ↔ GetObjectSequence
+        // would recurse until its stack overflows. Past MaxReModifyDepth the remaining modifiers stay listed as
+        // they are (their physics already in the sequence) instead of crashing the process.
+        if (_reModifyDepth >= MaxReModifyDepth)
+            return;
+        _reModifyDepth++;
+        try
         {
-            var head = State.Modifier(0);
-            State.RemoveModifierAt(0);
-            uint ignored = 0;
-            GetObjectSequence(head.Id, head.Speed, ref ignored, stopModifiers: false);
+            int n = State.ModifierCount;
+            for (int k = 0; k < n && State.ModifierCount > 0; k++)
+            {
+                var head = State.Modifier(0);
+                State.RemoveModifierAt(0);
+                uint ignored = 0;
+                GetObjectSequence(head.Id, head.Speed, ref ignored, stopModifiers: false);
+            }
+        }
+        finally
+        {
+            _reModifyDepth--;
         }
     }
+
+    /// <summary>How deep re_modify may nest (see <see cref="ReModify"/>); a real table nests once.</summary>
+    internal const int MaxReModifyDepth = 16;
+    private int _reModifyDepth;
 
     // CMotionTable::get_link: forwards, the link from the substate to the motion (else the style's link to it);
     // with a negative speed, the link the other way round (else from the substate to the style's default).
