@@ -23,6 +23,9 @@ public sealed class MotionTable
     /// <summary>The most animations one motion may list, the most frames an animation may have, and the most entries a table may hold (a reader's caps).</summary>
     public const int MaxAnimsPerMotion = 64, MaxFrames = 100_000, MaxEntries = 100_000;
 
+    /// <summary>The largest framerate accepted, frames/s (retail's tables use 10 to 60).</summary>
+    public const float MaxFramerate = 1000f;
+
     /// <summary>Builds and checks a table (every collection is copied).</summary>
     /// <param name="id">The 0x09… id.</param>
     /// <param name="defaultStyle">The style an object starts in (a key of <paramref name="styleDefaults"/>).</param>
@@ -154,8 +157,8 @@ public sealed class MotionTable
             var anim = anims[i];
             if (!_animations.TryGetValue(anim.AnimationId, out var animation))
                 throw new ArgumentException($"{ai}.animId: animation 0x{anim.AnimationId:X8} is not in the table's animations.", at);
-            if (!float.IsFinite(anim.Framerate) || anim.Framerate == 0f)
-                throw new ArgumentException($"{ai}.framerate: must be finite and not zero, got {anim.Framerate}.", at);
+            if (!float.IsFinite(anim.Framerate) || anim.Framerate == 0f || MathF.Abs(anim.Framerate) > MaxFramerate)
+                throw new ArgumentException($"{ai}.framerate: must be finite, not zero and within ±{MaxFramerate} frames/s, got {anim.Framerate}.", at);
             if (anim.LowFrame < 0 || anim.LowFrame >= animation.FrameCount)
                 throw new ArgumentException($"{ai}.lowFrame: must be a frame of the animation (0 to {animation.FrameCount - 1}), got {anim.LowFrame}.", at);
             if (anim.HighFrame != -1 && (anim.HighFrame < anim.LowFrame || anim.HighFrame >= animation.FrameCount))

@@ -69,6 +69,11 @@ public sealed class ObjectMotion
     public double FrameNumber => _sequence.FrameNumber;
     /// <summary>The number of animations in the sequence (links, then the cycle).</summary>
     public int AnimationCount => _sequence.Count;
+    /// <summary>The index of the cycle's first animation in the sequence, −1 when it is empty.</summary>
+    public int FirstCyclicAnimation => _sequence.FirstCyclic;
+    /// <summary>An animation of the sequence and its framerate (× the speed), in play order.</summary>
+    public (uint Id, float Framerate) Animation(int index) =>
+        (uint)index < (uint)_sequence.Count ? (_sequence[index].Animation.Id, _sequence[index].Framerate) : throw new ArgumentOutOfRangeException(nameof(index));
 
     /// <summary>The run rate in effect (the skills' answer, else the last run speed seen).</summary>
     public float RunRate

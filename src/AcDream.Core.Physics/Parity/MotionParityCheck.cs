@@ -67,7 +67,8 @@ internal static class MotionParityCheck
             maxDifference = Math.Max(maxDifference, difference);
             if (difference <= ParityCheck.Tolerance) within++;
             if (VectorMath.SameBits(position, expected.Position)) identical++;
-            string? flag = callFailure ?? FlagDifference(expected, state, step.Quanta > 0, motion.Interpreted);
+            string? flag = callFailure ?? FlagDifference(expected, state, step.Quanta > 0, motion.Interpreted)
+                ?? (expected.Sequence is { } seq ? SequenceDifference(seq, motion) : null);
             if (flag is not null) mismatches++;
             double bound = ParityCheck.Tolerance;
             if (departure is { } dep && f >= dep.FromFrame)
@@ -133,6 +134,41 @@ internal static class MotionParityCheck
             return $"interpreted state: expected {Describe(x)}, actual {Describe(i)}";
         return null;
     }
+
+    /// <summary>The frame number's tolerance: ACE keeps it in float, retail (and the library) in double.</summary>
+    public const double FrameNumberTolerance = 1e-4;
+
+    /// <summary>The sequence velocity's and omega's tolerance per component (a float's last bits at 10 m/s).</summary>
+    public const float SequenceVectorTolerance = 1e-5f;
+
+    // The motion table manager's state and the sequence, as the reference logs them.
+    private static string? SequenceDifference(MotionSequenceState e, ObjectMotion m)
+    {
+        if (m.Style != e.Style || m.Substate != e.Substate || !Same(m.SubstateSpeed, e.SubstateSpeed))
+            return $"motion state: expected style 0x{e.Style:X8} substate 0x{e.Substate:X8}×{e.SubstateSpeed:R}, actual 0x{m.Style:X8} 0x{m.Substate:X8}×{m.SubstateSpeed:R}";
+        if (m.ModifierCount != e.Modifiers.Length)
+            return $"modifiers: expected {e.Modifiers.Length}, actual {m.ModifierCount}";
+        for (int i = 0; i < e.Modifiers.Length; i++)
+            if (m.Modifier(i).Id != e.Modifiers[i].Id || !Same(m.Modifier(i).Speed, e.Modifiers[i].Speed))
+                return $"modifier {i}: expected 0x{e.Modifiers[i].Id:X8}×{e.Modifiers[i].Speed:R}, actual 0x{m.Modifier(i).Id:X8}×{m.Modifier(i).Speed:R}";
+        if (!Close(m.SequenceVelocity, e.Velocity) || !Close(m.SequenceOmega, e.Omega))
+            return $"sequence velocity/omega: expected {e.Velocity}/{e.Omega}, actual {m.SequenceVelocity}/{m.SequenceOmega}";
+        if (m.CurrentAnimation != e.CurrentAnimation || !Same(m.CurrentFramerate, e.CurrentFramerate) || !(Math.Abs(m.FrameNumber - e.FrameNumber) <= FrameNumberTolerance))
+            return string.Format(CultureInfo.InvariantCulture, "sequence: expected animation 0x{0:X8} at {1:R} frames/s, frame {2:R}; actual 0x{3:X8} at {4:R}, frame {5:R}",
+                e.CurrentAnimation, e.CurrentFramerate, e.FrameNumber, m.CurrentAnimation, m.CurrentFramerate, m.FrameNumber);
+        if (m.AnimationCount != e.Anims.Length || m.FirstCyclicAnimation != e.FirstCyclic)
+            return $"animation list: expected {e.Anims.Length} (first cyclic {e.FirstCyclic}), actual {m.AnimationCount} (first cyclic {m.FirstCyclicAnimation})";
+        for (int i = 0; i < e.Anims.Length; i++)
+        {
+            var (id, rate) = m.Animation(i);
+            if (id != e.Anims[i].Id || !Same(rate, e.Anims[i].Framerate))
+                return $"animation {i}: expected 0x{e.Anims[i].Id:X8}@{e.Anims[i].Framerate:R}, actual 0x{id:X8}@{rate:R}";
+        }
+        return null;
+    }
+
+    private static bool Close(Vector3 a, Vector3 b) =>
+        MathF.Abs(a.X - b.X) <= SequenceVectorTolerance && MathF.Abs(a.Y - b.Y) <= SequenceVectorTolerance && MathF.Abs(a.Z - b.Z) <= SequenceVectorTolerance;
 
     private static bool Same(float a, float b) => BitConverter.SingleToInt32Bits(a) == BitConverter.SingleToInt32Bits(b);
 

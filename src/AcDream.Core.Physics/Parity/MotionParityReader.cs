@@ -128,8 +128,41 @@ internal static class MotionParityReader
             TurnCommand = i.Id("turnCommand"),
             TurnSpeed = i.Float("turnSpeed"),
         };
+        MotionSequenceState? sequence = f.Has("motionState") && f.Has("sequence") ? ReadSequence(f.Obj("motionState"), f.Obj("sequence")) : null;
         return new MotionParityFrame([.. calls], f.Bool("quantumRan", true), f.Vec3("origin"), f.Id("cell"), f.Bool("contact", false),
-            f.Bool("onWalkable", false), interpreted);
+            f.Bool("onWalkable", false), interpreted, sequence);
+    }
+
+    private static MotionSequenceState ReadSequence(JsonObj m, JsonObj q)
+    {
+        var mods = m.Array("modifiers", optional: true);
+        if (mods.Count > MaxCallsPerFrame)
+            throw new SceneFormatException(m.Child("modifiers"), $"at most {MaxCallsPerFrame} modifiers.");
+        var modifiers = new MotionAndSpeed[mods.Count];
+        for (int i = 0; i < modifiers.Length; i++)
+        {
+            var o = new JsonObj(mods[i].Value, mods[i].Path);
+            modifiers[i] = new MotionAndSpeed(o.Id("id"), o.Float("speed"));
+        }
+        var items = q.Array("anims", optional: true);
+        if (items.Count > MaxCallsPerFrame)
+            throw new SceneFormatException(q.Child("anims"), $"at most {MaxCallsPerFrame} animations.");
+        var anims = new (uint, float)[items.Count];
+        int firstCyclic = -1;
+        for (int i = 0; i < anims.Length; i++)
+        {
+            // "0x03000F02@30*": the animation, its framerate, and * on the first cyclic one.
+            string text = JsonRead.String(items[i].Value, items[i].Path);
+            bool cyclic = text.EndsWith('*');
+            int at = text.IndexOf('@');
+            if (at < 0 || !float.TryParse(text[(at + 1)..].TrimEnd('*'), NumberStyles.Float, CultureInfo.InvariantCulture, out float rate))
+                throw new SceneFormatException(items[i].Path, $"expected \"id@framerate\", got \"{text}\".");
+            anims[i] = (Hex(text[..at], items[i].Path, text), rate);
+            if (cyclic && firstCyclic < 0)
+                firstCyclic = i;
+        }
+        return new MotionSequenceState(m.Id("style"), m.Id("substate"), m.Float("substateMod"), modifiers, q.Vec3("velocity"), q.Vec3("omega"),
+            q.Id("currAnim"), q.Float("currFramerate"), JsonRead.Double(q.Req("frameNumber"), q.Child("frameNumber")), anims, firstCyclic);
     }
 
     // The calls as the recording logs them:
