@@ -5,7 +5,7 @@ using BenchmarkDotNet.Running;
 namespace AcDream.Core.Physics.Bench;
 
 /// <summary>
-/// Entry point: <c>door</c> runs the door job, <c>body</c> the body-step job, <c>queries</c> times the world
+/// Entry point: <c>door</c> runs the door job, <c>body</c> the body-step job, <c>motion</c> the motion-step job, <c>queries</c> times the world
 /// queries, <c>compile</c> the BSP compiler's cost job, <c>registry</c> the registry's removal and move
 /// costs, <c>realcells</c> the real-cells job, <c>components</c> what each part of a transition costs, <c>trace</c>
 /// prints one door approach; anything else goes to BenchmarkDotNet's switcher.
@@ -20,6 +20,7 @@ public static class Program
         {
             case "door": return DoorJob.Run(rest);
             case "body": return BodyJob.Run(rest);
+            case "motion": return MotionJob.Run(rest);
             case "queries": return Queries.QueryJob.Run(rest);
             case "compile": return Compile.CompileJob.Run(rest);
             case "registry": return Registry.RegistryJob.Run();
