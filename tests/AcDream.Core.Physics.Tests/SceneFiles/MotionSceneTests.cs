@@ -105,6 +105,24 @@ public class MotionSceneTests
     }
 
     [Fact]
+    public void ATurnOfOneSecondWhileRunning_Turns135Degrees_WithinOneAnimationFrame()
+    {
+        // run-turn's north mover turns right with the Run key for 1 s (frames 30 to 59): −π/2 rad/s × 1.5 = 135°.
+        // The sequence hands out the modifier's omega per animation frame crossed (CSequence::apply_physics per
+        // frame of update_internal), and the run cycle plays at 30 × 2.375 = 71.25 frames/s: the turn is quantised
+        // to whole frames, within one frame's share, 135° / 71.25 = 1.9°.
+        var frames = SceneRunner.Run(SceneLibrary.Load("run-turn")).Movers[0].Frames;
+        double Heading(int f)
+        {
+            var forward = Vector3.Transform(Vector3.UnitY, frames[f].Motion!.Value.Rotation);
+            return Math.Atan2(forward.X, forward.Y) * 180 / Math.PI;
+        }
+        Assert.Equal(0.0, Heading(29), 1e-4);
+        Assert.InRange(Heading(59), 135 - 1.9, 135 + 1.9);
+        Assert.Equal(Heading(59), Heading(119), 1e-4); // no turn after the stop
+    }
+
+    [Fact]
     public void TheBuiltInCreatureWalk_StepsCreaturesWithoutSkills_AtRunRateOne()
     {
         var scene = SceneLibrary.Load("creature-walk");
