@@ -17,6 +17,9 @@ public sealed partial class PhysicsEngine
     /// stands on walkable ground) plus its velocity and acceleration (gravity when not standing on walkable
     /// ground; friction on it), through the same transition as <see cref="Resolve"/>; the outcome lands or
     /// lifts the body, reflects its velocity off what it hit by its elasticity, or zeroes it.
+    /// Not retail: the desired velocity stands for the animation's root motion, which retail applies per
+    /// animation frame from the object's motion table; a player or creature with a motion table steps with
+    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, Motion.ObjectMotion, double)"/> instead.
     /// </summary>
     /// <param name="mover">What the mover is (its PhysicsState decides Gravity, Sledding, Inelastic, Hidden, Frozen).</param>
     /// <param name="state">Where it is and how it stands.</param>

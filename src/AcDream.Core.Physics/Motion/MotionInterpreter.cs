@@ -521,12 +521,9 @@ internal sealed class MotionInterpreter
     /// <summary>CMotionInterp::MotionDone: the oldest queued motion is done.</summary>
     public void MotionDone(bool success)
     {
+        // (For an action retail also drops it from both states' action lists, which are not kept here.)
         if (_pendingCount == 0)
             return;
-        if ((_pending[0].Motion & MotionCommandMask.Action) != 0)
-        {
-            // An action done: retail also drops it from both states' action lists (not kept here).
-        }
         _pendingCount--;
         Array.Copy(_pending, 1, _pending, 0, _pendingCount);
     }

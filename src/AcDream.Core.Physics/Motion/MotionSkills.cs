@@ -24,7 +24,9 @@ public interface IMotionSkills
 /// "The motion layer"; the constants are the client's, as the reference notes give them):
 /// run rate = (burdenMod × Run/(Run + 200) × 11 + 4) / scale / 4, and 4.5 at a Run skill of exactly 800;
 /// jump height = burdenMod × (Jump/(Jump + 1300) × 22.2 + 0.05) × extent / scale, at least 0.35 m, the
-/// vertical speed √(19.6 × height); burdenMod = 1 below burden 1, 2 − burden up to 2, then 0.
+/// vertical speed √(19.6 × height); burdenMod = 1 below burden 1, 2 − burden up to 2, then 0. With no stamina
+/// left both skills count as 0 (run rate 1, the 0.35 m jump), and a burden of 2 or more cannot jump
+/// (CACQualities::InqRunRate / InqJumpVelocity / CanJump, CACQualitiesSkills.c:108-115, :926-1080).
 /// </summary>
 public sealed class RetailSkills : IMotionSkills
 {
@@ -33,8 +35,9 @@ public sealed class RetailSkills : IMotionSkills
     /// <param name="jumpSkill">Jump skill, 0 or more.</param>
     /// <param name="burden">Burden as a fraction of capacity (0 = none, 1 = full, 2 = twice), finite, 0 or more.</param>
     /// <param name="scale">The object's scale, finite and more than 0.</param>
+    /// <param name="hasStamina">False when the character's stamina is 0: its Run and Jump skills then count as 0.</param>
     /// <exception cref="ArgumentException">An argument out of range, named.</exception>
-    public RetailSkills(int runSkill, int jumpSkill, float burden = 0f, float scale = 1f)
+    public RetailSkills(int runSkill, int jumpSkill, float burden = 0f, float scale = 1f, bool hasStamina = true)
     {
         if (runSkill < 0 || runSkill > 100_000)
             throw new ArgumentException($"runSkill: must be 0 to 100000, got {runSkill}.", nameof(runSkill));
@@ -48,6 +51,7 @@ public sealed class RetailSkills : IMotionSkills
         JumpSkill = jumpSkill;
         Burden = burden;
         Scale = scale;
+        HasStamina = hasStamina;
     }
 
     /// <summary>The Run skill.</summary>
@@ -58,6 +62,8 @@ public sealed class RetailSkills : IMotionSkills
     public float Burden { get; }
     /// <summary>The object's scale.</summary>
     public float Scale { get; }
+    /// <summary>The character has stamina left (otherwise its Run and Jump skills count as 0).</summary>
+    public bool HasStamina { get; }
 
     /// <summary>The burden's factor: 1 below 1, 2 − burden below 2, else 0.</summary>
     public static float BurdenMod(float burden) => burden < 1f ? 1f : burden < 2f ? 2f - burden : 0f;
@@ -93,17 +99,17 @@ public sealed class RetailSkills : IMotionSkills
     /// <inheritdoc/>
     public bool TryRunRate(out float rate)
     {
-        rate = RunRate(RunSkill, Burden, Scale);
+        rate = RunRate(HasStamina ? RunSkill : 0, Burden, Scale);
         return true;
     }
 
     /// <inheritdoc/>
     public bool TryJumpVelocity(float extent, out float velocity)
     {
-        velocity = (float)Math.Sqrt(JumpHeightExact(JumpSkill, extent, Burden, Scale) * 19.6);
+        velocity = (float)Math.Sqrt(JumpHeightExact(HasStamina ? JumpSkill : 0, extent, Burden, Scale) * 19.6);
         return true;
     }
 
-    /// <summary>Always true: whether a character is too loaded down to jump is the server's rule, not the formulas'.</summary>
-    public bool CanJump(float extent) => true;
+    /// <summary>CACQualities::CanJump (CACQualitiesSkills.c:108-115): a burden below 2.</summary>
+    public bool CanJump(float extent) => Burden < 2f;
 }

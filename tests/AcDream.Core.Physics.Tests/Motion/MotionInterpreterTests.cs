@@ -147,4 +147,52 @@ public class MotionInterpreterTests
         rig.Frames(45);                                         // two seconds after landing: stopped
         Assert.Equal(0f, rig.Body.Velocity.Y);
     }
+
+    [Fact]
+    public void LeavingTheGroundWithNoStateVelocity_KeepsTheBodysOwnVelocity()
+    {
+        // get_leave_ground_velocity (CMotionInterp.c:530-565): standing still with no jump speed (extent 0), the state
+        // velocity is zero, so the body's own velocity is taken (world → body axes → world again).
+        var rig = new MotionRig();
+        rig.Body.Velocity = new Vector3(2f, 0f, 0f);
+        Assert.Equal(MotionError.None, rig.Motion.Jump(0f, true, rig.Mover, ref rig.State, ref rig.Body));
+        Assert.False(rig.State.OnWalkable);
+        Assert.Equal(2f, rig.Body.Velocity.X, 6);
+        Assert.Equal(0f, rig.Body.Velocity.Y, 6);
+        Assert.Equal(0f, rig.Body.Velocity.Z, 6);
+    }
+
+    [Fact]
+    public void StopCompletely_LeavesReadyWithNoSidestepOrTurn()
+    {
+        var rig = new MotionRig();
+        rig.Do(MotionCommand.WalkForward, HoldKey.Run);
+        rig.Do(MotionCommand.TurnRight, HoldKey.Run);
+        rig.Frames(5);
+        Assert.Equal(MotionError.None, rig.Motion.StopCompletely(rig.Mover, ref rig.State, ref rig.Body));
+        var i = rig.Motion.Interpreted;
+        Assert.Equal(MotionCommand.Ready, i.ForwardCommand);
+        Assert.Equal(0u, i.TurnCommand);
+        Assert.Equal(MotionCommand.Ready, rig.Motion.Substate);
+        Assert.Equal(0, rig.Motion.ModifierCount);
+        Assert.Equal(Vector3.Zero, rig.Motion.SequenceVelocity);
+        Assert.Equal(Vector3.Zero, rig.Motion.SequenceOmega);
+    }
+
+    [Fact]
+    public void StoppingATurnWhileWalking_TakesOnlyItsOmegaAway()
+    {
+        // While walking, TurnRight (bitfield 2) is a modifier: it adds −π/2 rad/s about z to the walk's sequence;
+        // stopping it subtracts that again (StopSequenceMotion) and the walk's 3.12 m/s stays.
+        var rig = new MotionRig();
+        rig.Do(MotionCommand.WalkForward);
+        rig.Do(MotionCommand.TurnRight);
+        Assert.Equal(MotionCommand.WalkForward, rig.Motion.Substate);
+        Assert.Equal(1, rig.Motion.ModifierCount);
+        Assert.Equal(-MathF.PI / 2, rig.Motion.SequenceOmega.Z, 5);
+        rig.Stop(MotionCommand.TurnRight);
+        Assert.Equal(0, rig.Motion.ModifierCount);
+        Assert.Equal(0f, rig.Motion.SequenceOmega.Z);
+        Assert.Equal(3.12f, rig.Motion.SequenceVelocity.Y);
+    }
 }

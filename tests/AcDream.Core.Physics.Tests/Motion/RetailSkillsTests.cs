@@ -55,4 +55,21 @@ public class RetailSkillsTests
         var ex = Assert.Throws<ArgumentException>(() => new RetailSkills(run, jump, burden));
         Assert.StartsWith(field + ":", ex.Message);
     }
+
+    [Fact]
+    public void WithNoStamina_BothSkillsCountAsZero()
+    {
+        // CACQualities::InqRunRate / InqJumpVelocity: stamina 0 → skill 0: run rate (0 + 4)/4 = 1, the 0.35 m floor jump √6.86.
+        var tired = new RetailSkills(300, 300, hasStamina: false);
+        Assert.True(tired.TryRunRate(out float rate));
+        Assert.Equal(1f, rate);
+        Assert.True(tired.TryJumpVelocity(1f, out float vz));
+        Assert.Equal(2.6191602, vz, 5);
+    }
+
+    [Theory]
+    [InlineData(1.99f, true)]
+    [InlineData(2f, false)]
+    public void LoadedDown_CannotJump(float burden, bool canJump) =>
+        Assert.Equal(canJump, new RetailSkills(100, 100, burden).CanJump(0.5f)); // CACQualities::CanJump: load < 2
 }
