@@ -114,23 +114,17 @@ public sealed class ObjectMotion
     /// adjusted (backwards, left, run) and given to the motion table.
     /// </summary>
     /// <exception cref="ArgumentException">An unknown command (not in the table and not a command the interpreter maps), a non-finite or out-of-range speed; nothing is changed.</exception>
-    public MotionError DoMotion(uint motion, in MotionParameters parameters, MoverDescription mover, ref MoverState state, ref BodyState body)
-    {
-        ArgumentNullException.ThrowIfNull(mover);
-        CheckCommand(motion, nameof(motion));
-        CheckParameters(parameters);
-        CheckBody(body);
-        Load(mover, state, body);
-        _interp.Autonomous = true;
-        var result = _interp.DoMotion(motion, parameters);
-        _manager.CheckForCompletedMotions();
-        Store(ref state, ref body);
-        return result;
-    }
+    public MotionError DoMotion(uint motion, in MotionParameters parameters, MoverDescription mover, ref MoverState state, ref BodyState body) =>
+        Command(stop: false, motion, parameters, mover, ref state, ref body);
 
     /// <summary>CMotionInterp::StopMotion: ends a raw command (the cycle goes back to the style's default, a modifier is taken off).</summary>
     /// <exception cref="ArgumentException">As <see cref="DoMotion"/>.</exception>
-    public MotionError StopMotion(uint motion, in MotionParameters parameters, MoverDescription mover, ref MoverState state, ref BodyState body)
+    public MotionError StopMotion(uint motion, in MotionParameters parameters, MoverDescription mover, ref MoverState state, ref BodyState body) =>
+        Command(stop: true, motion, parameters, mover, ref state, ref body);
+
+    // A raw command through CPhysicsObj::DoMotion / StopMotion (which mark the movement autonomous) and
+    // CMotionInterp::PerformMovement (which completes the motions that need no animation).
+    private MotionError Command(bool stop, uint motion, in MotionParameters parameters, MoverDescription mover, ref MoverState state, ref BodyState body)
     {
         ArgumentNullException.ThrowIfNull(mover);
         CheckCommand(motion, nameof(motion));
@@ -138,7 +132,7 @@ public sealed class ObjectMotion
         CheckBody(body);
         Load(mover, state, body);
         _interp.Autonomous = true;
-        var result = _interp.StopMotion(motion, parameters);
+        var result = stop ? _interp.StopMotion(motion, parameters) : _interp.DoMotion(motion, parameters);
         _manager.CheckForCompletedMotions();
         Store(ref state, ref body);
         return result;
