@@ -34,7 +34,8 @@ public sealed class Scene
 /// <summary>
 /// A mover of a scene: what it is, where it starts, and for every frame either its requested offset (moved by
 /// <see cref="PhysicsEngine.Resolve"/>) or, for a body mover, its elapsed time, desired motion and jump (moved
-/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>).
+/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>),
+/// or, for a motion mover (<see cref="IsMotion"/>), its elapsed time and the motion commands given before each step.
 /// </summary>
 public sealed class SceneMover
 {
