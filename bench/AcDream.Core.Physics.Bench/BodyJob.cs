@@ -12,8 +12,7 @@ namespace AcDream.Core.Physics.Bench;
 /// <summary>
 /// The body job (<c>-- body [--out DIR]</c>): the cost of one <see cref="PhysicsEngine.Step"/> next to one
 /// <see cref="PhysicsEngine.Resolve"/> of the same motion on the door scene, and of the step's other paths
-/// (a fall, time only gathered). Stopwatch loops after a warm-up, the rows sampled in turn over 15 rounds,
-/// each keeping its fastest; bytes per call.
+/// (a fall, time only gathered), timed side by side by <see cref="RowTimer"/>; bytes per call.
 /// Writes <c>body.md</c> to the output directory (default <c>out/body</c>).
 /// </summary>
 public static class BodyJob
@@ -58,33 +57,12 @@ public static class BodyJob
             ("Step: falling in the open (one quantum)", () => engine.Step(player, air, faller, Frame, Vector3.Zero)),
             ("Step: 10 ms gathered (no quantum runs)", () => engine.Step(player, start, walker, 0.01, walk)),
         };
+        var measured = RowTimer.Measure(Array.ConvertAll(rows, r => r.Call));
         var results = new (string Name, double Ns, double Bytes)[rows.Length];
-        foreach (var row in rows)
-            for (int i = 0; i < 20_000; i++)
-                row.Call(); // warm-up (JIT tiering)
-        // The rows are sampled in turn, round after round, so a change of load on a shared machine hits them
-        // alike; each keeps its fastest round.
-        const int Reps = 2000, Rounds = 15;
-        var best = new double[rows.Length];
-        Array.Fill(best, double.PositiveInfinity);
-        var sw = new System.Diagnostics.Stopwatch();
-        for (int round = 0; round < Rounds; round++)
-            for (int r = 0; r < rows.Length; r++)
-            {
-                var call = rows[r].Call;
-                sw.Restart();
-                for (int i = 0; i < Reps; i++)
-                    call();
-                best[r] = Math.Min(best[r], sw.Elapsed.TotalNanoseconds / Reps);
-            }
         for (int r = 0; r < rows.Length; r++)
         {
-            var call = rows[r].Call;
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < 1000; i++)
-                call();
-            results[r] = (rows[r].Name, best[r], (GC.GetAllocatedBytesForCurrentThread() - before) / 1000.0);
-            Console.WriteLine($"{rows[r].Name,-55} {best[r],8:0} ns  {results[r].Bytes:0} B");
+            results[r] = (rows[r].Name, measured[r].Ns, measured[r].Bytes);
+            Console.WriteLine($"{rows[r].Name,-55} {measured[r].Ns,8:0} ns  {measured[r].Bytes:0} B");
         }
 
         var md = new StringBuilder();

@@ -5,7 +5,7 @@ using BenchmarkDotNet.Running;
 namespace AcDream.Core.Physics.Bench;
 
 /// <summary>
-/// Entry point: <c>door</c> runs the door job, <c>body</c> the body-step job, <c>queries</c> times the world
+/// Entry point: <c>door</c> runs the door job, <c>body</c> the body-step job, <c>motion</c> the motion-step job, <c>queries</c> times the world
 /// queries, <c>compile</c> the BSP compiler's cost job, <c>registry</c> the registry's removal and move
 /// costs, <c>realcells</c> the real-cells job, <c>components</c> what each part of a transition costs, <c>trace</c>
 /// prints one door approach, <c>server</c> the server tick job, <c>chart</c> redraws the door job's speed/accuracy chart from its door.csv; anything
@@ -21,6 +21,7 @@ public static class Program
         {
             case "door": return DoorJob.Run(rest);
             case "body": return BodyJob.Run(rest);
+            case "motion": return MotionJob.Run(rest);
             case "queries": return Queries.QueryJob.Run(rest);
             case "compile": return Compile.CompileJob.Run(rest);
             case "registry": return Registry.RegistryJob.Run();

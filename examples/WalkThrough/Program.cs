@@ -12,6 +12,7 @@ using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
@@ -100,23 +101,28 @@ Console.WriteLine(replay.Matches ? "door scene: replay matches" : replay.FirstDi
 #endregion
 
 #region readme
-// A body moves by elapsed time instead of by target (retail CPhysicsObj::update_object): velocity, gravity,
-// friction, jumps, falls and landings. Here the player runs north at 4 m/s for two seconds and jumps once.
+// A player moves the retail way, by motion commands through its motion table (retail CMotionInterp and
+// CSequence): here it holds run forward for one second, jumps once (extent 0.5) and runs on until it lands.
+var motion = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(runSkill: 200, jumpSkill: 200));
 var body = BodyState.Creature();                                      // retail friction 0.95, elasticity 0.05
-var runner = engine.Place(player, Position.Outdoor(landblock, new Vector3(96f, 84f, 0f))).Next;
-for (int i = 0; i < 60; i++)
+var runner = engine.Place(player, Position.Outdoor(landblock, new Vector3(60f, 40f, 0f))).Next;
+motion.Place(player, runner, ref body);                               // enters the table's default: Ready
+motion.DoMotion(MotionCommand.WalkForward, new MotionParameters(1f, HoldKey.Run), player, ref runner, ref body);
+int stepped = 0, airborne = 0;
+for (; stepped <= 30 || !runner.OnWalkable; stepped++)                // 1 s of running, the jump, until it lands
 {
-    var step = engine.Step(player, runner, body, 1.0 / 30,            // elapsed seconds, at any frame rate
-        desiredVelocity: new Vector3(0f, 4f, 0f),                     // the run the input asks for, m/s
-        jumpVelocity: i == 10 ? 4f : 0f);                             // a jump's vertical speed, or 0
-    runner = step.Next;                                               // position, contact, walkable ground
+    if (stepped == 30 && motion.ChargeJump(player, runner, body) == MotionError.None)
+        motion.Jump(0.5f, staminaOk: true, player, ref runner, ref body);  // leaves the ground with the run's speed
+    var step = engine.Step(player, runner, body, motion, 1.0 / 30);   // elapsed seconds, at any frame rate
+    runner = step.Next;                                               // position, heading, contact, walkable ground
     body = step.Body;                                                 // velocity, time carried to the next call
+    airborne += runner.Contact ? 0 : 1;
 }
-Console.WriteLine($"after the run and the jump: {runner.Position}, standing: {runner.Contact && runner.OnWalkable}");
+Console.WriteLine($"ran and jumped: {runner.Position} after {stepped} frames, {airborne} in the air, standing: {runner.OnWalkable}");
 #endregion
 
 File.Delete(path);
-bool landed = runner.Contact && runner.OnWalkable && runner.Position.Origin.Y > 90f;
+bool landed = runner.Contact && runner.OnWalkable && runner.Position.Origin.Y > 55f;
 return inside && replay.Matches && landed ? 0 : 1;
 
 static Polygon Quad(Vector3 a, Vector3 b, Vector3 c, Vector3 d) => new([a, b, c, d]);

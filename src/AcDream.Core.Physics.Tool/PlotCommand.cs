@@ -28,6 +28,7 @@ internal static class PlotCommand
     private static readonly Color ObjectColor = Color.FromHex("#1F5FBF");
     private static readonly Color PathColor = Color.FromHex("#BBBBBB");
     private static readonly Color NormalColor = Color.FromHex("#D62728");
+    private static readonly Color HeadingColor = Color.FromHex("#000000");
 
     /// <summary>The colour of each outcome, in <see cref="FrameOutcome"/> order.</summary>
     private static readonly Color[] OutcomeColors =
@@ -49,6 +50,7 @@ internal static class PlotCommand
         DrawWorld(scene.World, frameCell, min, max, top, side, alongX);
         int[] counts = DrawPaths(paths, top, side, alongX);
         var names = LabelPaths(paths, top, side, alongX);
+        int ticks = DrawHeadings(paths, top);
 
         top.Title($"{scene.Name}: top view");
         top.XLabel("x (m)");
@@ -66,7 +68,8 @@ internal static class PlotCommand
         top.ShowLegend();
         side.ShowLegend();
         multiplot.SavePng(outPath, 1600, 800);
-        stdout.WriteLine($"{scene.Name}: {Program.Count(paths.Count, "mover")}, {Program.Count(counts.Sum(), "frame")} ({Describe(counts)}); plot written to {outPath}");
+        string headings = ticks > 0 ? $"; {Program.Count(ticks, "heading tick")}" : string.Empty;
+        stdout.WriteLine($"{scene.Name}: {Program.Count(paths.Count, "mover")}, {Program.Count(counts.Sum(), "frame")} ({Describe(counts)}){headings}; plot written to {outPath}");
         foreach (string name in names)
             stdout.WriteLine(Program.Printable($"  {name}"));
         return 0;
@@ -292,6 +295,39 @@ internal static class PlotCommand
         text.LabelAlignment = Alignment.LowerLeft;
         text.OffsetX = 4;
         text.OffsetY = -4;
+    }
+
+    /// <summary>The frames between heading ticks.</summary>
+    private const int HeadingTickEvery = 5;
+    /// <summary>A heading tick's length, m.</summary>
+    private const float HeadingTickLength = 0.6f;
+
+    /// <summary>A motion mover's heading: a short tick from every fifth frame's position along its forward (+Y of its rotation); returns the count.</summary>
+    private static int DrawHeadings(List<MoverPath> paths, Plot top)
+    {
+        int ticks = 0;
+        foreach (var p in paths)
+            for (int f = 0; f < p.Frames.Count; f += HeadingTickEvery)
+            {
+                if (p.Frames[f].Motion is not { } m)
+                    continue;
+                var at = p.Points[f];
+                var tip = at + Vector3.Transform(Vector3.UnitY, m.Rotation) * HeadingTickLength;
+                var tick = top.Add.Line(at.X, at.Y, tip.X, tip.Y);
+                tick.LineColor = HeadingColor;
+                tick.LineWidth = 1.5f;
+                tick.MarkerSize = 0;
+                ticks++;
+            }
+        return ticks;
+    }
+
+    /// <summary>The compass heading of a rotation: degrees clockwise from +Y (north) of its forward (+Y) axis, 0 to 360.</summary>
+    internal static double Heading(Quaternion rotation)
+    {
+        var forward = Vector3.Transform(Vector3.UnitY, rotation);
+        double degrees = Math.Atan2(forward.X, forward.Y) * 180.0 / Math.PI;
+        return degrees < 0 ? degrees + 360.0 : degrees;
     }
 
     private static void Arrow(ScottPlot.Plottables.Arrow arrow)

@@ -306,8 +306,18 @@ public static class Program
                 var fr = mover.Frames[f];
                 string hit = fr.CollidedObjects.Count == 0 ? "-" : string.Join(",", Hexes(fr.CollidedObjects));
                 string slide = fr.SlidingNormalValid ? $"{fr.SlidingNormal.X:F2},{fr.SlidingNormal.Y:F2}" : "-";
-                w.WriteLine($"{Printable(mover.Name),-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}");
+                w.WriteLine($"{Printable(mover.Name),-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}{MotionColumns(fr)}");
             }
+    }
+
+    /// <summary>A motion mover's frame: its heading (degrees clockwise from +Y) and the command in effect (the interpreted state).</summary>
+    private static string MotionColumns(TrajectoryFrame fr)
+    {
+        if (fr.Motion is not { } m)
+            return string.Empty;
+        var i = m.Interpreted;
+        string Command(uint id, float speed) => id == 0 ? "-" : $"{MotionCommandNames.Name(id)}x{speed.ToString("0.###", CultureInfo.InvariantCulture)}";
+        return $" hdg {PlotCommand.Heading(m.Rotation),6:F1} {Command(i.ForwardCommand, i.ForwardSpeed)} {Command(i.SideStepCommand, i.SideStepSpeed)} {Command(i.TurnCommand, i.TurnSpeed)}";
     }
 
     private static IEnumerable<string> Hexes(IReadOnlyList<uint> ids)

@@ -34,7 +34,8 @@ public sealed class Scene
 /// <summary>
 /// A mover of a scene: what it is, where it starts, and for every frame either its requested offset (moved by
 /// <see cref="PhysicsEngine.Resolve"/>) or, for a body mover, its elapsed time, desired motion and jump (moved
-/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>).
+/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>),
+/// or, for a motion mover (<see cref="IsMotion"/>), its elapsed time and the motion commands given before each step.
 /// </summary>
 public sealed class SceneMover
 {
@@ -57,12 +58,19 @@ public sealed class SceneMover
     }
 
     internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody,
-        string path, int[] frameItemStarts)
+        string path, int[] frameItemStarts, SceneMotion? commands = null)
         : this(name, description, start, motion, steps, startBody)
     {
         Path = path;
         _frameItemStarts = frameItemStarts;
+        Commands = commands;
     }
+
+    /// <summary>A motion mover's table, skills and commands (its steps carry only the elapsed time); null otherwise.</summary>
+    internal SceneMotion? Commands { get; }
+
+    /// <summary>The mover is driven by motion commands through a motion table (<see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, AcDream.Core.Physics.Motion.ObjectMotion, double)"/>).</summary>
+    public bool IsMotion => Commands is not null;
 
     /// <summary>The mover's JSON path in its scene file (e.g. <c>movers[3]</c>), for error messages.</summary>
     internal string Path { get; } = "movers[0]";
@@ -73,6 +81,8 @@ public sealed class SceneMover
     /// </summary>
     internal string FramePath(int frame)
     {
+        if (IsMotion)
+            return Path;
         int item = Array.BinarySearch(_frameItemStarts, frame);
         if (item < 0)
             item = ~item - 1;

@@ -8,6 +8,7 @@ using System.Text.Json;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
 using AcDream.Core.Physics.World;
@@ -107,7 +108,7 @@ public static class SceneLoader
                     throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
                 totalFrames += mover.FrameCount;
                 if (totalFrames > InputLimits.MaxSceneFrames)
-                    throw new SceneFormatException(path + (mover.IsBody ? ".steps" : ".motion"), $"the scene's movers walk more than {InputLimits.MaxSceneFrames} frames in all (InputLimits.MaxSceneFrames, movers × frames).");
+                    throw new SceneFormatException(path + (mover.IsMotion ? ".frames" : mover.IsBody ? ".steps" : ".motion"), $"the scene's movers walk more than {InputLimits.MaxSceneFrames} frames in all (InputLimits.MaxSceneFrames, movers × frames).");
                 movers.Add(mover);
             }
             if (movers.Count == 0)
@@ -479,27 +480,209 @@ public static class SceneLoader
             float scale = o.Float("scale", 1f);
             Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
             var start = ReadStart(o, path);
-            if (o.Has("motion") == o.Has("steps"))
-                throw new SceneFormatException(path, "a mover needs exactly one of \"motion\" (per-frame offsets) or \"steps\" (a body moved by time, velocity and jumps).");
-            if (o.Has("body") && !o.Has("steps"))
-                throw new SceneFormatException(o.Child("body"), "only a mover with \"steps\" has a body.");
+            if ((o.Has("motion") ? 1 : 0) + (o.Has("steps") ? 1 : 0) + (o.Has("commands") ? 1 : 0) != 1)
+                throw new SceneFormatException(path, "a mover needs exactly one of \"motion\" (per-frame offsets), \"steps\" (a body moved by time, velocity and jumps) or \"commands\" (a body moved by motion commands through a motion table).");
+            if (o.Has("body") && !o.Has("steps") && !o.Has("commands"))
+                throw new SceneFormatException(o.Child("body"), "only a mover with \"steps\" or \"commands\" has a body.");
+            foreach (string field in MotionOnlyFields)
+                if (o.Has(field) && !o.Has("commands"))
+                    throw new SceneFormatException(o.Child(field), "only a mover with \"commands\" has this field.");
             Vector3[] motion = [];
             SceneStep[] steps = [];
+            SceneMotion? commands = null;
             var body = BodyState.Creature();
             var itemStarts = new List<int>();
             if (o.Opt("steps") is { } st2)
-            {
                 steps = ReadSteps(st2, o.Child("steps"), itemStarts);
-                if (o.Opt("body") is { } b)
-                    body = ReadBody(b, o.Child("body"));
+            else if (o.Has("commands"))
+                (steps, commands) = ReadCommands(o, itemStarts);
+            else
+                motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
+            if (o.Opt("body") is { } b)
+                body = ReadBody(b, o.Child("body"));
+            o.End();
+            var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
+            return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts], commands);
+        }
+
+        private static readonly string[] MotionOnlyFields = ["motionTable", "skills", "frames", "hz", "dt"];
+
+        /// <summary>
+        /// A motion mover: "motionTable" ("humanoid" or a table in MotionTableReader's shape), "skills" ({ "run", "jump",
+        /// "burden" } with retail's formulas, defaults Run 200, Jump 200, burden 0; or "none"), "frames" and one of "hz" or
+        /// "dt" (every frame's elapsed time), and "commands", each at a "frame" or a "time" (seconds, rounded to the
+        /// nearest frame) with exactly one of "do", "stop" (a motion name or id, with "speed" and "hold"),
+        /// "stopCompletely": true, "holdKey" ("None" or "Run") or "jump" (an extent, with "stamina").
+        /// </summary>
+        private static (SceneStep[] Steps, SceneMotion Motion) ReadCommands(JsonObj o, List<int> itemStarts)
+        {
+            MotionTable table;
+            var te = o.Req("motionTable");
+            if (te.ValueKind == JsonValueKind.String)
+            {
+                string builtIn = te.GetString()!;
+                table = builtIn == "humanoid"
+                    ? MotionTables.Humanoid()
+                    : throw new SceneFormatException(o.Child("motionTable"), $"unknown built-in motion table \"{builtIn}\" (built-in: humanoid; or give the table inline).");
             }
             else
             {
-                motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
+                table = MotionTableReader.Read(te, o.Child("motionTable"));
+            }
+            RetailSkills? skills = new(200, 200);
+            if (o.Opt("skills") is { } sk)
+            {
+                if (sk.ValueKind == JsonValueKind.String && sk.GetString() == "none")
+                {
+                    skills = null;
+                }
+                else
+                {
+                    var so = new JsonObj(sk, o.Child("skills"));
+                    int run = so.Int("run", 200), jump = so.Int("jump", 200);
+                    float burden = so.Float("burden", 0f);
+                    so.End();
+                    skills = Checked(so.Path, () => new RetailSkills(run, jump, burden));
+                }
+            }
+            int frames = o.Int("frames", -1);
+            if (!o.Has("frames"))
+                throw new SceneFormatException(o.Child("frames"), "is required: how many frames the mover is stepped.");
+            if (frames < 1 || frames > MaxFramesPerMover)
+                throw new SceneFormatException(o.Child("frames"), $"must be 1 to {MaxFramesPerMover}, got {frames}.");
+            if (o.Has("dt") == o.Has("hz"))
+                throw new SceneFormatException(o.Path, "a mover with \"commands\" needs exactly one of \"dt\" (seconds a frame) or \"hz\" (frames per second).");
+            double dt;
+            if (o.Opt("dt") is { } d)
+            {
+                dt = JsonRead.Double(d, o.Child("dt"));
+                if (!(dt >= 0) || !(dt <= 1e6))
+                    throw new SceneFormatException(o.Child("dt"), $"must be zero or more seconds (at most 1e6), got {dt}.");
+            }
+            else
+            {
+                double hz = JsonRead.Double(o.Req("hz"), o.Child("hz"));
+                if (!(hz > 0) || !(hz <= 1e6))
+                    throw new SceneFormatException(o.Child("hz"), $"must be more than zero frames per second (at most 1e6), got {hz}.");
+                dt = 1.0 / hz;
+            }
+            var commands = new List<SceneCommand>();
+            foreach (var (value, p) in o.Array("commands"))
+            {
+                if (commands.Count >= MaxFramesPerMover)
+                    throw new SceneFormatException(p, $"a mover may give at most {MaxFramesPerMover} commands.");
+                var c = ReadCommand(value, p, frames, dt, table);
+                if (commands.Count > 0 && c.Frame < commands[^1].Frame)
+                    throw new SceneFormatException(p, $"commands must be in time order: frame {c.Frame} comes after frame {commands[^1].Frame}.");
+                commands.Add(c);
+            }
+            itemStarts.Add(0);
+            var steps = new SceneStep[frames];
+            Array.Fill(steps, new SceneStep(dt, Vector3.Zero, 0f));
+            return (steps, new SceneMotion(table, skills, [.. commands]));
+        }
+
+        private static readonly string[] CommandKinds = ["do", "stop", "stopCompletely", "holdKey", "jump"];
+
+        private static SceneCommand ReadCommand(JsonElement e, string path, int frames, double dt, MotionTable table)
+        {
+            var o = new JsonObj(e, path);
+            if (o.Has("frame") == o.Has("time"))
+                throw new SceneFormatException(path, "a command needs exactly one of \"frame\" (the frame before whose step it is given) or \"time\" (seconds from the start).");
+            int frame;
+            if (o.Has("frame"))
+            {
+                frame = o.Int("frame", 0);
+            }
+            else
+            {
+                double time = JsonRead.Double(o.Req("time"), o.Child("time"));
+                double at = dt > 0 ? Math.Round(time / dt, MidpointRounding.AwayFromZero) : (time == 0 ? 0 : double.PositiveInfinity);
+                if (!(time >= 0) || !(at < frames))
+                    throw new SceneFormatException(o.Child("time"), $"must be from 0 to the last frame's start ({(frames - 1) * dt} s), got {time}.");
+                frame = (int)at;
+            }
+            if (frame < 0 || frame >= frames)
+                throw new SceneFormatException(o.Child("frame"), $"must be a frame from 0 to {frames - 1}, got {frame}.");
+            string? kind = null;
+            foreach (string k in CommandKinds)
+                if (o.Has(k))
+                {
+                    if (kind is not null)
+                        throw new SceneFormatException(o.Child(k), $"a command does one thing: \"{kind}\" and \"{k}\" are both given.");
+                    kind = k;
+                }
+            if (kind is null)
+                throw new SceneFormatException(path, "a command needs one of \"do\", \"stop\" (a motion), \"stopCompletely\": true, \"holdKey\" or \"jump\" (an extent).");
+            if (kind is not ("do" or "stop"))
+                foreach (string field in new[] { "speed", "hold" })
+                    if (o.Has(field))
+                        throw new SceneFormatException(o.Child(field), $"only \"do\" and \"stop\" take \"{field}\".");
+            if (kind != "jump" && o.Has("stamina"))
+                throw new SceneFormatException(o.Child("stamina"), "only \"jump\" takes \"stamina\".");
+            SceneCommand command;
+            switch (kind)
+            {
+                case "do":
+                case "stop":
+                {
+                    uint motion = ReadMotionId(o.Req(kind), o.Child(kind), table);
+                    float speed = o.Float("speed", 1f);
+                    if (!float.IsFinite(speed) || MathF.Abs(speed) > 100f)
+                        throw new SceneFormatException(o.Child("speed"), $"must be finite and within ±100, got {speed}.");
+                    var hold = o.Opt("hold") is { } h ? ReadHoldKey(h, o.Child("hold")) : HoldKey.Invalid;
+                    command = new SceneCommand(frame, kind == "do" ? SceneCommandKind.Do : SceneCommandKind.Stop, motion, speed, hold, 0f, false, path);
+                    break;
+                }
+                case "stopCompletely":
+                    if (!JsonRead.Bool(o.Req(kind), o.Child(kind)))
+                        throw new SceneFormatException(o.Child(kind), "must be true (leave the field out for no command).");
+                    command = new SceneCommand(frame, SceneCommandKind.StopCompletely, 0, 1f, HoldKey.Invalid, 0f, false, path);
+                    break;
+                case "holdKey":
+                    command = new SceneCommand(frame, SceneCommandKind.SetHoldKey, 0, 1f, ReadHoldKey(o.Req(kind), o.Child(kind)), 0f, false, path);
+                    break;
+                default:
+                {
+                    float extent = o.Float("jump");
+                    if (!(extent >= 0f && extent <= 1f))
+                        throw new SceneFormatException(o.Child("jump"), $"must be an extent from 0 to 1, got {extent}.");
+                    command = new SceneCommand(frame, SceneCommandKind.Jump, 0, 1f, HoldKey.Invalid, extent, o.Bool("stamina", true), path);
+                    break;
+                }
             }
             o.End();
-            var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
-            return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts]);
+            return command;
+        }
+
+        private static HoldKey ReadHoldKey(JsonElement e, string path)
+        {
+            string key = JsonRead.String(e, path);
+            return key switch
+            {
+                "None" => HoldKey.None,
+                "Run" => HoldKey.Run,
+                _ => throw new SceneFormatException(path, $"expected \"None\" or \"Run\", got \"{key}\"."),
+            };
+        }
+
+        /// <summary>A motion command by name (MotionCommandNames) or id, known to the table or mapped by the interpreter.</summary>
+        private static uint ReadMotionId(JsonElement e, string path, MotionTable table)
+        {
+            uint id;
+            if (e.ValueKind == JsonValueKind.String && !e.GetString()!.StartsWith("0x", StringComparison.OrdinalIgnoreCase))
+            {
+                string name = e.GetString()!;
+                if (!MotionCommandNames.TryId(name, out id))
+                    throw new SceneFormatException(path, $"unknown motion command \"{name}\" (known: {MotionCommandNames.List}; or a hex id).");
+            }
+            else
+            {
+                id = JsonRead.Id(e, path);
+            }
+            if (!(id is MotionCommand.WalkBackwards or MotionCommand.TurnLeft or MotionCommand.SideStepLeft) && !table.Knows(id))
+                throw new SceneFormatException(path, $"command {MotionCommandNames.Name(id)} (0x{id:X8}) is not in motion table 0x{table.Id:X8} and is not one the interpreter maps.");
+            return id;
         }
 
         /// <summary>

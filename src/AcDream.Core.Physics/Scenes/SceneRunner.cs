@@ -42,6 +42,7 @@ public static class SceneRunner
             var frames = new List<TrajectoryFrame>(mover.FrameCount);
             var state = mover.Start;
             var body = mover.StartBody;
+            var motion = mover.Commands?.Start(mover.Description, state, ref body);
             for (int f = 0; f < mover.FrameCount; f++)
             {
                 SceneStep? step = null;
@@ -52,11 +53,15 @@ public static class SceneRunner
                     target.Frame.Origin += mover.Motion[f];
                 try
                 {
-                    frames.Add(Advance(engine, mover.Description, step, target, ref state, ref body));
+                    frames.Add(Advance(engine, mover.Description, step, target, ref state, ref body, motion, f));
                 }
                 catch (ArgumentException ex)
                 {
                     throw Refused(mover, f, ex);
+                }
+                catch (SceneFormatException ex)
+                {
+                    throw new SceneFormatException(ex.JsonPath, $"mover \"{mover.Name}\", frame {f}: {ex.Detail}", ex);
                 }
                 if (log is not null)
                 {
@@ -75,18 +80,28 @@ public static class SceneRunner
     /// engine accepts the input; its <see cref="ArgumentException"/> otherwise passes through.
     /// </summary>
     internal static TrajectoryFrame Advance(PhysicsEngine engine, MoverDescription description, SceneStep? step, in Position target,
-        ref MoverState state, ref BodyState body)
+        ref MoverState state, ref BodyState body, SceneMotion.Cursor? motion = null, int frame = 0)
     {
         if (step is { } s)
         {
-            var stepped = engine.Step(description, state, body, s.Elapsed, s.DesiredVelocity, s.JumpVelocity);
+            var stepped = motion is null
+                ? engine.Step(description, state, body, s.Elapsed, s.DesiredVelocity, s.JumpVelocity)
+                : StepMotion(engine, description, s.Elapsed, ref state, ref body, motion, frame);
             state = stepped.Next;
             body = stepped.Body;
-            return TrajectoryFrame.From(s, stepped);
+            return TrajectoryFrame.From(s, stepped, motion?.Motion);
         }
         var result = engine.Resolve(description, state, target);
         state = result.Next;
         return TrajectoryFrame.From(target, result);
+    }
+
+    /// <summary>A motion mover's frame: that frame's commands are given, then the body steps through the motion layer.</summary>
+    internal static BodyStepResult StepMotion(PhysicsEngine engine, MoverDescription description, double elapsed, ref MoverState state,
+        ref BodyState body, SceneMotion.Cursor motion, int frame)
+    {
+        motion.Give(frame, description, ref state, ref body);
+        return engine.Step(description, state, body, motion.Motion, elapsed);
     }
 
     /// <summary>

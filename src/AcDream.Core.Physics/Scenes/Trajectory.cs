@@ -49,14 +49,23 @@ public sealed class TrajectoryFrame
     /// <summary>The move was accepted.</summary>
     public bool Succeeded { get; init; }
 
+    /// <summary>A motion mover's frame: its heading and the interpreted state after the step; null for other frames.</summary>
+    public TrajectoryMotion? Motion { get; init; }
+
     /// <summary>Builds a body frame from its input and the engine's result (copies the collided ids).</summary>
     public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result) =>
         Build(default, step, result.Body.Velocity, result.Quanta, result.Move);
 
+    /// <summary>Builds a body frame; with <paramref name="motion"/>, a motion mover's frame recording its heading and interpreted state.</summary>
+    internal static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result, Motion.ObjectMotion? motion) =>
+        Build(default, step, result.Body.Velocity, result.Quanta, result.Move,
+            motion is null ? null : new TrajectoryMotion(result.Next.Position.Frame.Orientation, motion.Interpreted));
+
     /// <summary>Builds a frame from a target and the engine's result (copies the collided ids).</summary>
     public static TrajectoryFrame From(Position target, in MoveResult result) => Build(target, null, default, 0, result);
 
-    private static TrajectoryFrame Build(Position target, SceneStep? step, Vector3 velocity, int quanta, in MoveResult result)
+    private static TrajectoryFrame Build(Position target, SceneStep? step, Vector3 velocity, int quanta, in MoveResult result,
+        TrajectoryMotion? motion = null)
     {
         var next = result.Next;
         return new TrajectoryFrame
@@ -78,9 +87,18 @@ public sealed class TrajectoryFrame
             SlidingNormal = next.SlidingNormal,
             CollidedObjects = result.CollidedObjects.ToArray(),
             Succeeded = result.Succeeded,
+            Motion = motion,
         };
     }
 }
+
+/// <summary>
+/// What a motion mover's frame records beyond a body frame: the heading (the frame's rotation) and the command in
+/// effect (the interpreted motion state) after the step.
+/// </summary>
+/// <param name="Rotation">The mover's rotation after the step.</param>
+/// <param name="Interpreted">The interpreted motion state after the step.</param>
+public readonly record struct TrajectoryMotion(Quaternion Rotation, Motion.InterpretedMotionState Interpreted);
 
 /// <summary>The frames of one mover of a scene.</summary>
 public sealed class MoverTrajectory
@@ -212,12 +230,56 @@ public sealed class Trajectory
                 w.WriteNumber("quanta", f.Quanta);
                 w.WriteEndObject();
             }
+            if (f.Motion is { } motion)
+                WriteMotion(w, motion);
             w.WriteEndObject();
         }
         return Encoding.UTF8.GetString(buffer.ToArray());
     }
 
     private static string Hex(uint id) => $"0x{id:X8}";
+
+    private static void WriteMotion(Utf8JsonWriter w, TrajectoryMotion m)
+    {
+        w.WriteStartObject("motion");
+        var q = m.Rotation;
+        w.WriteStartArray("rotation");
+        w.WriteNumberValue(q.W); w.WriteNumberValue(q.X); w.WriteNumberValue(q.Y); w.WriteNumberValue(q.Z);
+        w.WriteEndArray();
+        var i = m.Interpreted;
+        w.WriteString("style", Hex(i.Style));
+        WriteCommand(w, "forward", i.ForwardCommand, i.ForwardSpeed);
+        WriteCommand(w, "sideStep", i.SideStepCommand, i.SideStepSpeed);
+        WriteCommand(w, "turn", i.TurnCommand, i.TurnSpeed);
+        w.WriteEndObject();
+    }
+
+    private static void WriteCommand(Utf8JsonWriter w, string name, uint command, float speed)
+    {
+        w.WriteStartObject(name);
+        w.WriteString("command", Hex(command));
+        w.WriteNumber("speed", speed);
+        w.WriteEndObject();
+    }
+
+    private static TrajectoryMotion ReadMotion(JsonObj o)
+    {
+        var rotation = JsonRead.RawQuaternion(o.Req("rotation"), o.Child("rotation"));
+        var i = new Motion.InterpretedMotionState { Style = o.Id("style") };
+        (i.ForwardCommand, i.ForwardSpeed) = ReadCommand(o.Obj("forward"));
+        (i.SideStepCommand, i.SideStepSpeed) = ReadCommand(o.Obj("sideStep"));
+        (i.TurnCommand, i.TurnSpeed) = ReadCommand(o.Obj("turn"));
+        o.End();
+        return new TrajectoryMotion(rotation, i);
+    }
+
+    private static (uint, float) ReadCommand(JsonObj o)
+    {
+        uint command = o.Id("command");
+        float speed = o.Float("speed");
+        o.End();
+        return (command, speed);
+    }
 
     private static void WriteVec(Utf8JsonWriter w, string name, Vector3 v)
     {
@@ -297,6 +359,13 @@ public sealed class Trajectory
             quanta = JsonRead.Int(bo.Req("quanta"), bo.Child("quanta"));
             bo.End();
         }
+        TrajectoryMotion? motion = null;
+        if (o.Opt("motion") is { } me)
+        {
+            if (step is null)
+                throw new SceneFormatException(o.Child("motion"), "only a body frame (\"step\") has a motion record.");
+            motion = ReadMotion(new JsonObj(me, o.Child("motion")));
+        }
         var cp = o.Obj("contactPlane");
         bool cpValid = JsonRead.Bool(cp.Req("valid"), cp.Child("valid"));
         var plane = new Plane(cp.Vec3("normal"), cp.Float("d"));
@@ -326,6 +395,7 @@ public sealed class Trajectory
             SlidingNormal = sn,
             CollidedObjects = ids,
             Succeeded = JsonRead.Bool(o.Req("succeeded"), o.Child("succeeded")),
+            Motion = motion,
         };
         o.End();
         return frame;

@@ -105,6 +105,7 @@ public static class TrajectoryReplay
                 return Fail(new ReplayDifference(mover.Name, -1, "frames.count", Str(recorded.Frames.Count), Str(mover.FrameCount)), compared, tolerance, notes);
             var state = mover.Start;
             var body = mover.StartBody;
+            var motion = mover.Commands?.Start(mover.Description, state, ref body);
             for (int f = 0; f < recorded.Frames.Count; f++)
             {
                 var expected = recorded.Frames[f];
@@ -114,11 +115,15 @@ public static class TrajectoryReplay
                 TrajectoryFrame actual;
                 try
                 {
-                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body);
+                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body, motion, f);
                 }
                 catch (ArgumentException ex)
                 {
                     return Fail(new ReplayDifference(mover.Name, f, expected.Step.HasValue ? "step" : "target", "a valid input", ex.Message), compared, tolerance, notes);
+                }
+                catch (SceneFormatException ex)
+                {
+                    return Fail(new ReplayDifference(mover.Name, f, "step", "a valid input", ex.Message), compared, tolerance, notes);
                 }
                 if (log is not null)
                 {
@@ -170,7 +175,25 @@ public static class TrajectoryReplay
             ?? (expected.Succeeded != actual.Succeeded ? D("succeeded", Str(expected.Succeeded), Str(actual.Succeeded)) : null)
             ?? (expected.Step is null ? null
                 : Vec("body.velocity", expected.Velocity, actual.Velocity)
-                ?? (expected.Quanta != actual.Quanta ? D("body.quanta", Str(expected.Quanta), Str(actual.Quanta)) : null));
+                ?? (expected.Quanta != actual.Quanta ? D("body.quanta", Str(expected.Quanta), Str(actual.Quanta)) : null))
+            ?? CompareMotion(expected.Motion, actual.Motion);
+
+        ReplayDifference? CompareMotion(TrajectoryMotion? e, TrajectoryMotion? a)
+        {
+            if (e is null || a is null)
+                return e is null == a is null ? null : D("motion", e is null ? "none" : "a motion frame", a is null ? "none" : "a motion frame");
+            var (er, ar) = (e.Value.Rotation, a.Value.Rotation);
+            var (ei, ai) = (e.Value.Interpreted, a.Value.Interpreted);
+            ReplayDifference? Command(string field, uint ec, uint ac, float es, float @as) =>
+                ec != ac ? D($"motion.{field}.command", MotionCommandNames.Name(ec), MotionCommandNames.Name(ac))
+                : !Near(es, @as) ? D($"motion.{field}.speed", Str(es), Str(@as)) : null;
+            return (!Near(er.W, ar.W) ? D("motion.rotation.w", Str(er.W), Str(ar.W)) : null)
+                ?? Vec("motion.rotation", new Vector3(er.X, er.Y, er.Z), new Vector3(ar.X, ar.Y, ar.Z))
+                ?? (ei.Style != ai.Style ? D("motion.style", Hex(ei.Style), Hex(ai.Style)) : null)
+                ?? Command("forward", ei.ForwardCommand, ai.ForwardCommand, ei.ForwardSpeed, ai.ForwardSpeed)
+                ?? Command("sideStep", ei.SideStepCommand, ai.SideStepCommand, ei.SideStepSpeed, ai.SideStepSpeed)
+                ?? Command("turn", ei.TurnCommand, ai.TurnCommand, ei.TurnSpeed, ai.TurnSpeed);
+        }
     }
 
     private static bool SameIds(IReadOnlyList<uint> a, IReadOnlyList<uint> b)

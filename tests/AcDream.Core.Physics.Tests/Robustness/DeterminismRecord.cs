@@ -117,14 +117,26 @@ internal static class DeterminismRecord
         void Add(uint x) { for (int i = 0; i < 4; i++) { h ^= (byte)(x >> (8 * i)); h *= 1099511628211UL; } }
         var state = mover.Start;
         var body = mover.StartBody;
+        var motion = mover.Commands?.Start(mover.Description, state, ref body);
         for (int f = 0; f < mover.FrameCount; f++)
         {
             MoveResult r;
             if (mover.IsBody)
             {
-                // A body mover (PhysicsEngine.Step): its velocity and quanta count too.
+                // A body mover (PhysicsEngine.Step): its velocity and quanta count too; a motion mover's commands
+                // are given first and its interpreted state is hashed after the step (the orientation is in FrameValues).
                 var step = mover.Steps[f];
-                var stepped = engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity);
+                var stepped = motion is null
+                    ? engine.Step(mover.Description, state, body, step.Elapsed, step.DesiredVelocity, step.JumpVelocity)
+                    : SceneRunner.StepMotion(engine, mover.Description, step.Elapsed, ref state, ref body, motion, f);
+                if (motion is not null)
+                {
+                    var i = motion.Motion.Interpreted;
+                    foreach (uint v in new[] { i.Style, i.ForwardCommand, i.SideStepCommand, i.TurnCommand })
+                        Add(v);
+                    foreach (float v in new[] { i.ForwardSpeed, i.SideStepSpeed, i.TurnSpeed })
+                        Add(BitConverter.SingleToUInt32Bits(v));
+                }
                 body = stepped.Body;
                 Add(BitConverter.SingleToUInt32Bits(body.Velocity.X));
                 Add(BitConverter.SingleToUInt32Bits(body.Velocity.Y));

@@ -52,6 +52,25 @@ public class QueryToolTests
     }
 
     [Fact]
+    public void Plot_OfAMotionScene_DrawsAHeadingTickEveryFifthFrame()
+    {
+        // run-turn: 120, 120 and 240 frames, a tick on frames 0, 5, 10…: 24 + 24 + 48.
+        string png = Path.Combine(Path.GetTempPath(), $"acdream-{Guid.NewGuid():N}-run-turn.png");
+        try
+        {
+            var (code, output, err) = Run("plot", "run-turn", "--out", png);
+            Assert.Equal("", err);
+            Assert.Equal(0, code);
+            Assert.Contains("; 96 heading ticks; plot written to", output);
+            Assert.DoesNotContain("heading ticks", Run("plot", "jump", "--out", png).Out); // body movers without a motion table have none
+        }
+        finally
+        {
+            File.Delete(png);
+        }
+    }
+
+    [Fact]
     public void Plot_WritesAPng_AndCountsTheCellarStairsSteps()
     {
         string png = Path.Combine(Path.GetTempPath(), $"acdream-{Guid.NewGuid():N}-cellar.png");

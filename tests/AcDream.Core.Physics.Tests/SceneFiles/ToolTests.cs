@@ -40,6 +40,24 @@ public class ToolTests
     }
 
     [Fact]
+    public void Run_OfAMotionScene_PrintsTheHeadingAndTheCommandInEffect()
+    {
+        // run-turn: the Run key from frame 0 (RunForward at Run 200's rate, (200/400 × 11 + 4)/4 = 2.375), TurnRight
+        // with the Run key from 1 s (× 1.5) to 2 s, the stop at 3 s (frame 90 at 30 Hz).
+        var (code, output, err) = Run("run", "run-turn");
+        Assert.Equal(0, code);
+        Assert.Equal("", err);
+        var lines = output.TrimEnd().Split('\n');
+        string Line(string mover, int frame) => lines.Single(l => l.StartsWith(mover + " ", StringComparison.Ordinal)
+            && l.Split(' ', StringSplitOptions.RemoveEmptyEntries)[1] == frame.ToString(System.Globalization.CultureInfo.InvariantCulture));
+        Assert.EndsWith(" hdg    0.0 RunForwardx2.375 - -", Line("north", 0));
+        Assert.EndsWith(" hdg   90.0 RunForwardx2.375 - -", Line("east", 0)); // rotated −90° about z: facing +X
+        Assert.EndsWith(" RunForwardx2.375 - TurnRightx1.5", Line("north", 45));
+        Assert.EndsWith(" Readyx1 - -", Line("north", 90));
+        Assert.DoesNotContain(" hdg ", Run("run", "boulder").Out); // offset movers print no motion columns
+    }
+
+    [Fact]
     public void Record_ThenReplay_Matches_AndAnEditedFileFails()
     {
         string traj = Temp("door.json");

@@ -1,0 +1,33 @@
+using AcDream.Core.Physics.Motion;
+
+namespace AcDream.Core.Physics.Scenes;
+
+/// <summary>What a scene command does (the <see cref="ObjectMotion"/> call it makes).</summary>
+internal enum SceneCommandKind
+{
+    /// <summary><see cref="ObjectMotion.DoMotion"/>.</summary>
+    Do,
+    /// <summary><see cref="ObjectMotion.StopMotion"/>.</summary>
+    Stop,
+    /// <summary><see cref="ObjectMotion.StopCompletely"/>.</summary>
+    StopCompletely,
+    /// <summary><see cref="ObjectMotion.SetHoldKey"/>.</summary>
+    SetHoldKey,
+    /// <summary><see cref="ObjectMotion.ChargeJump"/> then <see cref="ObjectMotion.Jump"/>.</summary>
+    Jump,
+}
+
+/// <summary>
+/// One command of a motion mover, given before the step of <see cref="Frame"/> (commands of one frame in file
+/// order), as a player's key press or a server's movement event reaches the motion layer between steps.
+/// </summary>
+/// <param name="Frame">The frame before whose step it is given.</param>
+/// <param name="Kind">The call.</param>
+/// <param name="Motion">The motion command (Do, Stop).</param>
+/// <param name="Speed">Its speed (Do, Stop).</param>
+/// <param name="HoldKey">The hold key given with it (Do, Stop), or the key set (SetHoldKey).</param>
+/// <param name="Extent">The jump's extent, 0..1 (Jump).</param>
+/// <param name="Stamina">The owner has the stamina (Jump).</param>
+/// <param name="Path">Its JSON path, for error messages.</param>
+internal readonly record struct SceneCommand(int Frame, SceneCommandKind Kind, uint Motion, float Speed, HoldKey HoldKey, float Extent,
+    bool Stamina, string Path);

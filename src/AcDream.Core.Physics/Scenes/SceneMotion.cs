@@ -1,0 +1,90 @@
+using System;
+using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
+
+namespace AcDream.Core.Physics.Scenes;
+
+/// <summary>
+/// What drives a motion mover of a scene (one with "commands"): its motion table, its skills and its commands
+/// in frame order. Immutable; every run makes its own <see cref="ObjectMotion"/> (<see cref="Start"/>).
+/// </summary>
+internal sealed class SceneMotion
+{
+    private readonly SceneCommand[] _commands;
+
+    public SceneMotion(MotionTable table, RetailSkills? skills, SceneCommand[] commands)
+    {
+        Table = table;
+        Skills = skills;
+        _commands = commands;
+    }
+
+    /// <summary>The motion table.</summary>
+    public MotionTable Table { get; }
+    /// <summary>The skills (retail's formulas), or null for an object without them (run rate 1, jumps at 10 m/s).</summary>
+    public RetailSkills? Skills { get; }
+    /// <summary>The commands, in frame order.</summary>
+    public ReadOnlySpan<SceneCommand> Commands => _commands;
+
+    /// <summary>A fresh motion layer placed at the mover's start (the body's velocity as the placement leaves it).</summary>
+    public Cursor Start(MoverDescription mover, in MoverState state, ref BodyState body)
+    {
+        var motion = new ObjectMotion(Table, Skills);
+        motion.Place(mover, state, ref body);
+        return new Cursor(this, motion);
+    }
+
+    /// <summary>One run of a motion mover: its motion layer and the next command to give.</summary>
+    internal sealed class Cursor(SceneMotion script, ObjectMotion motion)
+    {
+        private int _next;
+
+        public ObjectMotion Motion { get; } = motion;
+
+        /// <summary>
+        /// Gives the commands of <paramref name="frame"/> (and any earlier ones not yet given), in order. A command the
+        /// motion layer refuses with an <see cref="ArgumentException"/> becomes a <see cref="SceneFormatException"/>
+        /// naming the command's JSON path; refusals by rule (a jump in the air) are retail behaviour, not errors.
+        /// </summary>
+        public void Give(int frame, MoverDescription mover, ref MoverState state, ref BodyState body)
+        {
+            var commands = script.Commands;
+            while (_next < commands.Length && commands[_next].Frame <= frame)
+            {
+                ref readonly var c = ref commands[_next++];
+                try
+                {
+                    Apply(c, mover, ref state, ref body);
+                }
+                catch (ArgumentException ex)
+                {
+                    throw SceneFormatException.Wrap(c.Path, ex);
+                }
+            }
+        }
+
+        private void Apply(in SceneCommand c, MoverDescription mover, ref MoverState state, ref BodyState body)
+        {
+            switch (c.Kind)
+            {
+                case SceneCommandKind.Do:
+                    Motion.DoMotion(c.Motion, new MotionParameters(c.Speed, c.HoldKey), mover, ref state, ref body);
+                    break;
+                case SceneCommandKind.Stop:
+                    Motion.StopMotion(c.Motion, new MotionParameters(c.Speed, c.HoldKey), mover, ref state, ref body);
+                    break;
+                case SceneCommandKind.StopCompletely:
+                    Motion.StopCompletely(mover, ref state, ref body);
+                    break;
+                case SceneCommandKind.SetHoldKey:
+                    Motion.SetHoldKey(c.HoldKey, mover, ref state, ref body);
+                    break;
+                case SceneCommandKind.Jump:
+                    // A player's jump: charge_jump on the key press, jump on its release (MotionRig does the same).
+                    if (Motion.ChargeJump(mover, state, body) == MotionError.None)
+                        Motion.Jump(c.Extent, c.Stamina, mover, ref state, ref body);
+                    break;
+            }
+        }
+    }
+}
