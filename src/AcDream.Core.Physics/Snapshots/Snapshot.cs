@@ -39,16 +39,7 @@ public static class Snapshot
     private static ReadOnlySpan<byte> Magic => "ACPS"u8;
 
     /// <summary>A mover's state and its body's state.</summary>
-    public static byte[] SaveMover(in MoverState state, in BodyState body)
-    {
-        var w = Begin();
-        Span<int> sections = stackalloc int[2];
-        sections[0] = w.BeginSection(MoverTag);
-        WriteMover(w, state);
-        sections[1] = w.BeginSection(BodyTag);
-        WriteBody(w, body);
-        return w.Finish(sections);
-    }
+    public static byte[] SaveMover(in MoverState state, in BodyState body) => WriteMover(state, body, null);
 
     /// <summary>Reads what <see cref="SaveMover(in MoverState, in BodyState)"/> wrote (a motion section, if any, is skipped).</summary>
     /// <exception cref="InvalidDataException">The bytes are not a snapshot of this version, are cut short, or hold a bad value.</exception>
@@ -76,14 +67,23 @@ public static class Snapshot
     public static byte[] SaveMover(in MoverState state, in BodyState body, ObjectMotion motion)
     {
         ArgumentNullException.ThrowIfNull(motion);
+        return WriteMover(state, body, motion);
+    }
+
+    // Sections 1 and 2, and 4 when there is a motion layer.
+    private static byte[] WriteMover(in MoverState state, in BodyState body, ObjectMotion? motion)
+    {
         var w = Begin();
-        Span<int> sections = stackalloc int[3];
+        Span<int> sections = stackalloc int[motion is null ? 2 : 3];
         sections[0] = w.BeginSection(MoverTag);
         WriteMover(w, state);
         sections[1] = w.BeginSection(BodyTag);
         WriteBody(w, body);
-        sections[2] = w.BeginSection(MotionTag);
-        MotionSection.Write(w, motion);
+        if (motion is not null)
+        {
+            sections[2] = w.BeginSection(MotionTag);
+            MotionSection.Write(w, motion);
+        }
         return w.Finish(sections);
     }
 
