@@ -50,6 +50,19 @@ internal sealed class MotionInterpreter
     /// <summary>CPhysicsObj::movement_is_autonomous: the last command came from the object's own controls (DoMotion/StopMotion).</summary>
     public bool Autonomous;
 
+    // The pending motions, for a snapshot (read, and replaced whole by a load).
+    internal int PendingCount => _pendingCount;
+    internal (uint Motion, MotionError JumpError) PendingAt(int i) => (_pending[i].Motion, _pending[i].JumpError);
+    internal void RestorePending(ReadOnlySpan<(uint Motion, MotionError JumpError)> items)
+    {
+        if (_pending.Length < items.Length)
+            _pending = new PendingMotion[items.Length];
+        for (int i = 0; i < items.Length; i++)
+            _pending[i] = new PendingMotion { Motion = items[i].Motion, JumpError = items[i].JumpError };
+        Array.Clear(_pending, items.Length, _pending.Length - items.Length);
+        _pendingCount = items.Length;
+    }
+
     public MotionInterpreter(MotionTableManager manager, IMotionSkills? skills)
     {
         _manager = manager;

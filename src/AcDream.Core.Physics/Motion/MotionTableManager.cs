@@ -30,6 +30,21 @@ internal sealed class MotionTableManager
 
     public MotionState State { get; } = new();
 
+    // The pending motions and the animation counter, for a snapshot (read, and replaced whole by a load).
+    internal int PendingCount => _pendingCount;
+    internal uint AnimationCounter => _animationCounter;
+    internal (uint Motion, uint AnimCount) PendingAt(int i) => (_pending[i].Motion, _pending[i].AnimCount);
+    internal void RestorePending(ReadOnlySpan<(uint Motion, uint AnimCount)> items, uint animationCounter)
+    {
+        if (_pending.Length < items.Length)
+            _pending = new Pending[items.Length];
+        for (int i = 0; i < items.Length; i++)
+            _pending[i] = new Pending { Motion = items[i].Motion, AnimCount = items[i].AnimCount };
+        Array.Clear(_pending, items.Length, _pending.Length - items.Length);
+        _pendingCount = items.Length;
+        _animationCounter = animationCounter;
+    }
+
     /// <summary>Called for every motion whose animations are done (MotionTableManager → CPhysicsObj::MotionDone → the interpreter).</summary>
     public MotionInterpreter? Interpreter { get; set; }
 

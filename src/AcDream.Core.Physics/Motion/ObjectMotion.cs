@@ -189,6 +189,12 @@ public sealed class ObjectMotion
         return result;
     }
 
+    // ---- the snapshot's view (Snapshots/MotionSection) ----
+
+    internal MotionInterpreter Interpreter => _interp;
+    internal MotionTableManager Manager => _manager;
+    internal Sequence AnimationSequence => _sequence;
+
     // ---- the body step's hooks ----
 
     internal void Load(MoverDescription mover, in MoverState state, in BodyState body)

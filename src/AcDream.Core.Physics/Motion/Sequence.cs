@@ -46,6 +46,21 @@ internal sealed class Sequence
     public ref readonly Node this[int index] => ref _nodes[index];
     public bool HasAnims => _count != 0;
 
+    /// <summary>Replaces the whole sequence (a snapshot's load; the caller has checked the indices and frame ranges).</summary>
+    public void Restore(ReadOnlySpan<Node> nodes, int firstCyclic, int current, double frameNumber, Vector3 velocity, Vector3 omega)
+    {
+        Array.Clear(_nodes, 0, _count);
+        if (_nodes.Length < nodes.Length)
+            _nodes = new Node[nodes.Length];
+        nodes.CopyTo(_nodes);
+        _count = nodes.Length;
+        FirstCyclic = firstCyclic;
+        Current = current;
+        FrameNumber = frameNumber;
+        Velocity = velocity;
+        Omega = omega;
+    }
+
     /// <summary>Clears the animations and the physics (CSequence::clear).</summary>
     public void Clear()
     {

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Snapshots;
@@ -15,10 +16,11 @@ namespace AcDream.Core.Physics.Snapshots;
 /// </summary>
 /// <remarks>
 /// <para>Layout (little-endian): the magic "ACPS", a version (u16, <see cref="Version"/>), then sections, each a
-/// tag (u8), a length (u32) and that many bytes. Tags: 1 mover state, 2 body state, 3 objects, 5 the objects'
+/// tag (u8), a length (u32) and that many bytes. Tags: 1 mover state, 2 body state, 3 objects, 4 the motion
+/// state of an <see cref="ObjectMotion"/> (CMotionInterp, MotionTableManager and CSequence; animations by id,
+/// resolved in the same <see cref="MotionTable"/> on load), 5 the objects'
 /// places in their cells' lists (the order retail tests a cell's objects in, which moves and removals change:
-/// CObjCell::remove_shadow_object moves the last object into the hole); 4 is kept for the motion state
-/// (CMotionInterp) the motion layer will add. A reader skips sections whose tag it does not know,
+/// CObjCell::remove_shadow_object moves the last object into the hole). A reader skips sections whose tag it does not know,
 /// so a newer writer's extra sections are read past; a missing section it needs is an error.</para>
 /// <para>Reading never reads past the bytes given (at most <see cref="MaxBytes"/>), checks every float is finite
 /// and every enum known, and reports a bad snapshot with an <see cref="InvalidDataException"/> naming the field and
@@ -32,23 +34,14 @@ public static class Snapshot
     /// <summary>The largest snapshot read, in bytes (64 MiB: about 1.3 million objects).</summary>
     public const int MaxBytes = 64 << 20;
 
-    private const byte MoverTag = 1, BodyTag = 2, ObjectsTag = 3, CellOrderTag = 5;
+    private const byte MoverTag = 1, BodyTag = 2, ObjectsTag = 3, MotionTag = 4, CellOrderTag = 5;
     private const int ObjectBytes = 4 + 4 + 32 + 4 + 4 + 1;
     private static ReadOnlySpan<byte> Magic => "ACPS"u8;
 
     /// <summary>A mover's state and its body's state.</summary>
-    public static byte[] SaveMover(in MoverState state, in BodyState body)
-    {
-        var w = Begin();
-        Span<int> sections = stackalloc int[2];
-        sections[0] = w.BeginSection(MoverTag);
-        WriteMover(w, state);
-        sections[1] = w.BeginSection(BodyTag);
-        WriteBody(w, body);
-        return w.Finish(sections);
-    }
+    public static byte[] SaveMover(in MoverState state, in BodyState body) => WriteMover(state, body, null);
 
-    /// <summary>Reads what <see cref="SaveMover"/> wrote.</summary>
+    /// <summary>Reads what <see cref="SaveMover(in MoverState, in BodyState)"/> wrote (a motion section, if any, is skipped).</summary>
     /// <exception cref="InvalidDataException">The bytes are not a snapshot of this version, are cut short, or hold a bad value.</exception>
     public static void LoadMover(ReadOnlySpan<byte> data, out MoverState state, out BodyState body)
     {
@@ -64,6 +57,58 @@ public static class Snapshot
         }
         if (!haveMover || !haveBody)
             throw r.Fail(haveMover ? "body" : "mover", "section is missing");
+    }
+
+    /// <summary>
+    /// A mover's state, its body's state and its motion layer's whole dynamic state (section 4): the
+    /// interpreter's raw and interpreted states, the motion table manager's state and queue, and the animation
+    /// sequence. Restored by <see cref="LoadMover(ReadOnlySpan{byte}, out MoverState, out BodyState, ObjectMotion)"/>.
+    /// </summary>
+    public static byte[] SaveMover(in MoverState state, in BodyState body, ObjectMotion motion)
+    {
+        ArgumentNullException.ThrowIfNull(motion);
+        return WriteMover(state, body, motion);
+    }
+
+    // Sections 1 and 2, and 4 when there is a motion layer.
+    private static byte[] WriteMover(in MoverState state, in BodyState body, ObjectMotion? motion)
+    {
+        var w = Begin();
+        Span<int> sections = stackalloc int[motion is null ? 2 : 3];
+        sections[0] = w.BeginSection(MoverTag);
+        WriteMover(w, state);
+        sections[1] = w.BeginSection(BodyTag);
+        WriteBody(w, body);
+        if (motion is not null)
+        {
+            sections[2] = w.BeginSection(MotionTag);
+            MotionSection.Write(w, motion);
+        }
+        return w.Finish(sections);
+    }
+
+    /// <summary>
+    /// Reads what <see cref="SaveMover(in MoverState, in BodyState, ObjectMotion)"/> wrote, putting the motion state
+    /// into <paramref name="motion"/>, which must be built from the same <see cref="MotionTable"/> (the animations
+    /// are found by id). All is read and checked before <paramref name="motion"/> changes: on failure it is unchanged.
+    /// </summary>
+    /// <exception cref="InvalidDataException">As the other overload; or the motion section is missing, names another
+    /// table or an animation not in it, holds a count past its cap, a bad index, frame or value.</exception>
+    public static void LoadMover(ReadOnlySpan<byte> data, out MoverState state, out BodyState body, ObjectMotion motion)
+    {
+        ArgumentNullException.ThrowIfNull(motion);
+        LoadMover(data, out state, out body);
+        var r = Open(data);
+        while (r.Remaining > 0)
+        {
+            var section = NextSection(ref r, out byte tag);
+            if (tag == MotionTag)
+            {
+                MotionSection.Read(ref section, motion);
+                return;
+            }
+        }
+        throw r.Fail("motion", "section is missing");
     }
 
     /// <summary>

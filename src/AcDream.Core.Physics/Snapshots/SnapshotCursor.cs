@@ -22,12 +22,13 @@ internal sealed class SnapshotWriter
     public void F64(double v) { BinaryPrimitives.WriteDoubleLittleEndian(_buffer.GetSpan(8), v); Advance(8); }
     public void Vec(Vector3 v) { F32(v.X); F32(v.Y); F32(v.Z); }
 
+    public void Quat(Quaternion q) { F32(q.X); F32(q.Y); F32(q.Z); F32(q.W); }
+
     public void Position(in Position p)
     {
         U32(p.CellId);
         Vec(p.Frame.Origin);
-        var q = p.Frame.Orientation;
-        F32(q.X); F32(q.Y); F32(q.Z); F32(q.W);
+        Quat(p.Frame.Orientation);
     }
 
     /// <summary>Writes a section length placeholder and returns where it is.</summary>
@@ -111,9 +112,10 @@ internal ref struct SnapshotReader
     {
         uint cell = U32(field + ".cell");
         var origin = Vec(field + ".origin");
-        var q = new Quaternion(F32(field + ".orientation.x"), F32(field + ".orientation.y"), F32(field + ".orientation.z"), F32(field + ".orientation.w"));
-        return new Position(cell, new Frame(origin, q));
+        return new Position(cell, new Frame(origin, Quat(field + ".orientation")));
     }
+
+    public Quaternion Quat(string field) => new(F32(field + ".x"), F32(field + ".y"), F32(field + ".z"), F32(field + ".w"));
 
     public void Skip(int n, string field) => Take(n, field);
 
