@@ -77,4 +77,36 @@ public class BodyRulesTests
         ground.Step(1.0 / 30, new Vector3(1, 0, 0));
         Assert.Equal(Vector3.Zero, ground.Body.Omega);
     }
+
+    /// <summary>
+    /// handle_all_collisions (CPhysicsObj.c:6227): a transition that counted two stationary-fall frames stops the
+    /// body whatever its velocity, and the counter (1 or 2) is carried; at 1 frame an airborne body hitting a
+    /// floor (normal +z) with elasticity 0.5 bounces: v_z = -4 + 4 × 1.5 = +2 m/s.
+    /// </summary>
+    [Fact]
+    public void StationaryFall_TwoFramesStopTheBody_OneFrameBounces()
+    {
+        var v = new Vector3(1f, 0f, -4f);
+        int carried = BodyMotion.HandleCollisions(ref v, PhysicsState.Gravity, 0.5f, false, false, true, Vector3.UnitZ, 2, 0);
+        Assert.Equal(Vector3.Zero, v);
+        Assert.Equal(2, carried);
+
+        v = new Vector3(1f, 0f, -4f);
+        carried = BodyMotion.HandleCollisions(ref v, PhysicsState.Gravity, 0.5f, false, false, true, Vector3.UnitZ, 1, 0);
+        Assert.Equal(new Vector3(1f, 0f, 2f), v);
+        Assert.Equal(1, carried);
+    }
+
+    /// <summary>
+    /// get_leave_ground_velocity (CMotionInterp.c:530): with no desired motion and no jump (all below EPSILON) the
+    /// body keeps its velocity (walking off a ledge while sliding keeps the slide); otherwise the desired motion
+    /// with the jump speed replaces it.
+    /// </summary>
+    [Fact]
+    public void LeaveGroundVelocity_WithoutMotion_KeepsTheCurrentVelocity()
+    {
+        var current = new Vector3(0.7f, -0.3f, 0.1f);
+        Assert.Equal(current, BodyMotion.LeaveGroundVelocity(current, Vector3.Zero, 0f));
+        Assert.Equal(new Vector3(2f, 0f, 3f), BodyMotion.LeaveGroundVelocity(current, new Vector3(2f, 0f, 0f), 3f));
+    }
 }
