@@ -183,30 +183,30 @@ public sealed partial class PhysicsEngine
         var ps = mover.PhysicsState;
         var begin = s.Position;
         var frame = begin.Frame;
-        if ((ps & PhysicsState.Hidden) == 0 && motion is not null)
+        if ((ps & PhysicsState.Hidden) == 0)
         {
-            // UpdatePositionInternal (CPhysicsObj.c:4431): the sequence's offset (body axes), its origin scaled by the
-            // object's scale on walkable ground and by 0 off it (the turn is kept), combined onto the position; then
-            // the physics displacement (UpdatePhysicsInternal) and the physics omega, in world axes.
-            var offset = Frame.Identity;
-            motion.Advance(quantum, ref offset);
-            float scale = s.OnWalkable ? mover.Scale : 0f;
-            offset.Origin = new Vector3((float)(offset.Origin.X * (double)scale), (float)(offset.Origin.Y * (double)scale),
-                (float)(offset.Origin.Z * (double)scale));
-            frame = begin.Frame.Combine(offset);
             var velocity = b.Velocity;
-            BodyMotion.IntegrateInto(ref frame.Origin, ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
+            if (motion is not null)
+            {
+                // UpdatePositionInternal (CPhysicsObj.c:4431): the sequence's offset (body axes), its origin scaled by the
+                // object's scale on walkable ground and by 0 off it (the turn is kept), combined onto the position; then
+                // the physics displacement (UpdatePhysicsInternal) and the physics omega, in world axes.
+                var offset = Frame.Identity;
+                motion.Advance(quantum, ref offset);
+                float scale = s.OnWalkable ? mover.Scale : 0f;
+                offset.Origin = new Vector3((float)(offset.Origin.X * (double)scale), (float)(offset.Origin.Y * (double)scale),
+                    (float)(offset.Origin.Z * (double)scale));
+                frame = begin.Frame.Combine(offset);
+                BodyMotion.IntegrateInto(ref frame.Origin, ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
+            }
+            else
+            {
+                // UpdatePositionInternal: the animation's root motion counts only on walkable ground (scaled by 0 off it).
+                var offset = s.OnWalkable ? desiredVelocity * quantum : Vector3.Zero;
+                offset += BodyMotion.Integrate(ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
+                frame.Origin += offset;
+            }
             b.Velocity = velocity;
-            frame.Orientation = BodyMotion.Rotate(frame.Orientation, b.Omega * quantum);
-        }
-        else if ((ps & PhysicsState.Hidden) == 0)
-        {
-            // UpdatePositionInternal: the animation's root motion counts only on walkable ground (scaled by 0 off it).
-            var offset = s.OnWalkable ? desiredVelocity * quantum : Vector3.Zero;
-            var velocity = b.Velocity;
-            offset += BodyMotion.Integrate(ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
-            b.Velocity = velocity;
-            frame.Origin += offset;
             frame.Orientation = BodyMotion.Rotate(frame.Orientation, b.Omega * quantum);
         }
         // UpdateObjectInternal: an origin unchanged within EPSILON on every axis runs no transition (only the turn is kept).
