@@ -64,8 +64,9 @@ internal static class MotionParityReader
         MoverDescription mover;
         try
         {
-            mover = new MoverDescription(0x50000001, [new Sphere(new Vector3(0, 0, 0.475f), 0.48f), new Sphere(new Vector3(0, 0, 1.35f), 0.48f)],
-                m.Float("stepUpHeight"), m.Float("stepDownHeight"), state, ObjectInfoState.IsPlayer, m.Float("scale", 1f));
+            // The retail player's spheres and id, with the file's step heights, state and scale.
+            mover = MoverDescription.Player().With(stepUpHeight: m.Float("stepUpHeight"), stepDownHeight: m.Float("stepDownHeight"),
+                physicsState: state, scale: m.Float("scale", 1f));
         }
         catch (ArgumentException ex)
         {
