@@ -9,8 +9,13 @@
 #   tools/mutate.sh --check         only check that every fault applies (its text occurs exactly once)
 #
 # Environment: MUTATE_DIR (the copy; default a new temporary directory), MUTATE_TIMEOUT (seconds per
-# test run, default 300). Results: one line per fault on stdout and in $MUTATE_DIR/results.tsv, then a
-# score per folder. Builds and test runs are sequential (one at a time).
+# test run, default 300), MUTATE_FILTER (a `dotnet test --filter` expression: only those tests run, for
+# the baseline and every fault; cheaper on a busy machine. A fault the subset kills is killed by the
+# whole suite too; one it lets through is reported "survived (filtered)" and must be run again without
+# the filter before it is counted as a survivor). Results: one line per fault on stdout and in
+# $MUTATE_DIR/results.tsv, then a score per folder and per area (the id's letters: T transition, S shapes,
+# B BSP, W world, Q queries and casts, Y and V body, C object cull, M memos). Builds and test runs are
+# sequential (one at a time).
 set -euo pipefail
 
 repo="$(cd "$(dirname "$0")/.." && pwd)"
@@ -55,7 +60,9 @@ build() {
     cp "$src/bin/Release/net10.0/AcDream.Core.Physics.dll" "$tests/bin/Release/net10.0/"
 }
 # The whole suite; xUnit stops at the first failing test (a killed mutant needs no more).
-run_tests() { timeout "$timeout_s" dotnet test "$tests" -c Release --no-build -nologo -- xUnit.StopOnFail=true >"$work/test.log" 2>&1; }
+filter=()
+if [ -n "${MUTATE_FILTER:-}" ]; then filter=(--filter "$MUTATE_FILTER"); fi
+run_tests() { timeout "$timeout_s" dotnet test "$tests" -c Release --no-build -nologo "${filter[@]}" -- xUnit.StopOnFail=true >"$work/test.log" 2>&1; }
 
 if [ "$check_only" -eq 0 ]; then
   echo "copy: $copy"
@@ -87,6 +94,7 @@ while IFS=$'\t' read -r id file find replace what; do
     outcome="no-build"; detail="$(grep -m1 -o 'error [A-Z0-9]*:.*' "$work/build.log" || true)"
   elif run_tests; then
     outcome="survived"; detail="$what"
+    if [ "${#filter[@]}" -gt 0 ]; then detail="(filtered) $what"; fi
   else
     rc=$?
     outcome="killed"
@@ -100,9 +108,14 @@ if [ "$check_only" -eq 1 ]; then
   [ "$bad" -eq 0 ] && echo "every fault applies"
   exit "$bad"
 fi
-# Score per folder: killed / (killed + survived); faults that do not build or apply are not counted.
+# Score per folder and per area: killed / (killed + survived); faults that do not build or apply are not counted.
+score() {
+  awk -F'\t' -v key="$1" '
+    { d = $2; if (key == "area") { d = $1; sub(/[0-9]+$/, "", d); d = "area " d } }
+    $3 == "killed" { k[d]++ } $3 == "survived" { s[d]++ } { f[d] = 1 }
+    END { for (d in f) { t = k[d] + s[d]; printf "%-22s killed %d of %d (%s)\n", d, k[d], t, t ? sprintf("%.0f %%", 100 * k[d] / t) : "-" } }
+  ' "$results" | sort
+}
 echo
-awk -F'\t' '
-  $3 == "killed" { k[$2]++ } $3 == "survived" { s[$2]++ } { f[$2] = 1 }
-  END { for (d in f) { t = k[d] + s[d]; printf "%-12s killed %d of %d (%s)\n", d, k[d], t, t ? sprintf("%.0f %%", 100 * k[d] / t) : "-" } }
-' "$results" | sort
+score folder
+score area

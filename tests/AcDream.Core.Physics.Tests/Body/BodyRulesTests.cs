@@ -109,4 +109,38 @@ public class BodyRulesTests
         Assert.Equal(current, BodyMotion.LeaveGroundVelocity(current, Vector3.Zero, 0f));
         Assert.Equal(new Vector3(2f, 0f, 3f), BodyMotion.LeaveGroundVelocity(current, new Vector3(2f, 0f, 0f), 3f));
     }
+
+    /// <summary>
+    /// Leaving the ground into a wall within one quantum (CPhysicsObj::SetPositionInternal): set_on_walkable(0)
+    /// calls LeaveGround first, which sets the velocity to the run, and handle_all_collisions then reflects that
+    /// velocity off the wall. The runner (no EdgeSlide, step-down 1.5 m) stands at rest on a 2 m block whose edge
+    /// is at y = 106, with a 4 m wall 1.5 m beyond it (face at y = 107.5), and runs at 7.5 m/s for one 0.2 s
+    /// quantum (MaxQuantum, stepped whole): the target, 1.5 m on at y = 107.1, lies past the edge and 0.08 m into
+    /// the wall (its spheres, radius 0.48, touch the face at y = 107.02). The runner's sphere still rests on the
+    /// edge while its centre is less than its radius beyond it (y &lt; 106.48), so it leaves the ground between
+    /// 106.48 and the wall. The quantum starts at rest on walkable ground, so no acceleration or friction enters:
+    /// the velocity is the run (0, 7.5, 0) reflected off the wall's normal (0, −1, 0) keeping the elasticity 0.05:
+    /// v_y = 7.5 − 7.5 × 1.05 = −0.375 m/s, v_x = v_z = 0. Setting the run after the reflection would leave
+    /// (0, 7.5, 0), pressing into the wall.
+    /// </summary>
+    [Fact]
+    public void LeavingTheGroundIntoAWall_ReflectsTheRunVelocity()
+    {
+        var world = TestGeometry.FlatWorld();
+        BodyDriver.AddBox(world, 0x7000_0030, new Vector3(98, 102, 0), new Vector3(102, 106, 2));
+        BodyDriver.AddBox(world, 0x7000_0031, new Vector3(98, 107.5f, 0), new Vector3(102, 108.5f, 4));
+        var driver = new BodyDriver(world, BodyDriver.Runner(1.5f), MoverState.OnFloor(TestGeometry.At(100, 105.6f, 2f), 2f),
+            BodyState.Creature());
+
+        var step = driver.Step(0.2, new Vector3(0, 7.5f, 0));
+
+        Assert.Equal(1, step.Quanta);
+        Assert.False(driver.State.OnWalkable, $"the runner should have left the ground, at {driver.Origin}");
+        Assert.True(step.Move.CollisionNormalValid, "the runner should have met the wall");
+        Assert.Equal(-1f, step.Move.CollisionNormal.Y, 5);
+        Assert.InRange(driver.Origin.Y, 106.48f, 107.02f + PhysicsConstants.Epsilon);
+        Assert.Equal(0f, driver.Body.Velocity.X);
+        Assert.Equal(-0.375f, driver.Body.Velocity.Y, 5);
+        Assert.Equal(0f, driver.Body.Velocity.Z);
+    }
 }
