@@ -102,4 +102,60 @@ public class ObjectCullTests
         }
         Assert.True(hit, "the player never touched the ball across the seam");
     }
+
+    [Fact]
+    public void AJumpIntoABallFarAboveTheStart_IsStoppedByIt()
+    {
+        // The player jumps straight up at 10 m/s from the floor; a 0.5 m ball hangs right above it, centre
+        // 5.5 m up. The first object region is made on the jump's first quantum, around spheres whose top is
+        // under 2.2 m (head sphere 0.48 m at 1.35 m, risen 0.33 m), reaching 2 m higher (step-down 1.5 + 0.5,
+        // the move's rest is 0): the ball, from 5.0 m up, lies above it. Free, the head's top would rise to
+        // 1.83 + 10² / (2 × 9.8) = 6.93 m, through the ball; it must stop where the head sphere touches it:
+        // head centre at most 5.5 − 0.98 = 4.52 m, origin at most 4.52 − 1.35 = 3.17 m. The spheres leave the
+        // region through its top, so a new region must be made there.
+        var world = TestGeometry.FlatWorld();
+        var ballAt = TestGeometry.At(100f, 100f, 5.5f);
+        world.Objects.Register(BarrelId, new PhysicsSetup { Spheres = [new Sphere(Vector3.Zero, 0.5f)] }, ballAt);
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player();
+        var state = MoverState.OnFloor(TestGeometry.At(100f, 100f, 0f), 0f);
+        var body = AcDream.Core.Physics.Body.BodyState.Creature();
+        bool hit = false;
+        float top = 0f;
+        for (int frame = 0; frame < 30; frame++)
+        {
+            var step = engine.Step(player, state, body, 1.0 / 30, Vector3.Zero, frame == 0 ? 10f : 0f);
+            state = step.Next;
+            body = step.Body;
+            hit |= step.Move.CollidedObjects.Span.Contains(BarrelId);
+            top = MathF.Max(top, state.Position.Origin.Z);
+            Assert.True(state.Position.Origin.Z <= 3.17f + 1e-3f, $"frame {frame}: the player rose to {state.Position.Origin.Z} m, into the ball");
+        }
+        Assert.True(hit, $"the player never touched the ball (highest origin {top} m)");
+    }
+
+    [Fact]
+    public void AColumnsTop_HoldsAPlayerWalkingOnIt()
+    {
+        // A column (cylinder, radius 1.5 m, 6 m tall, foot at z = 0) and the player without EdgeSlide standing on
+        // its top, walking 0.1 m a frame across it (8 frames, never nearer the rim than 0.7 m). The object region
+        // reaches about 3 m below the spheres (step-down 1.5 + 0.5 + 1), far above the column's foot: only the
+        // column's height puts its reach box there. On the cap the foot sphere (radius 0.48, centre 0.475 above
+        // the origin) touches z = 6, so the origin stays at 6.005, in contact with walkable ground every frame.
+        var world = TestGeometry.FlatWorld();
+        var column = new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 1.5f, 6f)], Height = 6f, Radius = 1.5f };
+        world.Objects.Register(BarrelId, column, TestGeometry.At(100f, 100f, 0f), 1f, PhysicsState.Static);
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player().With(physicsState: PhysicsState.Gravity);
+        var state = MoverState.OnFloor(TestGeometry.At(100f, 100f, 6.005f), 6f);
+        for (int frame = 0; frame < 8; frame++)
+        {
+            var target = state.Position;
+            target.Frame.Origin.X += 0.1f;
+            state = engine.Resolve(player, state, target).Next;
+            Assert.True(state.Contact && state.OnWalkable, $"frame {frame}: the player lost the column's top at {state.Position}");
+            Assert.InRange(state.Position.Origin.Z, 6f, 6.01f);
+        }
+        Assert.Equal(100.8f, state.Position.Origin.X, 3);
+    }
 }

@@ -133,6 +133,41 @@ public class RefusedMoveTests
     }
 
     [Fact]
+    public void AnotherTargetFromTheRefusedState_IsNotAnsweredFromTheLastRefusal()
+    {
+        // Refused head-on, then asked from the very same state for a step along the face: 0.05 m east is kept,
+        // 0.05 m north is not (the wall), as in SlidingAlongTheWall_AfterStoppingAgainstIt_IsNotRefused.
+        var (engine, player) = FreshEngineBesidePlayerAgainstTheDoor();
+        var state = player.State;
+        Assert.False(engine.Resolve(player.Description, state, Ahead(state, HeadOn)).Succeeded);
+
+        var result = engine.Resolve(player.Description, state, Ahead(state, new Vector3(0.05f, 0.05f, 0)));
+
+        Assert.True(result.Succeeded, "a step along the wall is not the refused push");
+        Assert.Equal(state.Position.Origin.X + 0.05f, result.Next.Position.Origin.X, 2e-3f);
+        Assert.Equal(PlayerStopY, result.Next.Position.Origin.Y, 3e-3f);
+    }
+
+    [Fact]
+    public void ARefusedRequest_AfterItsLandblockIsUnloaded_IsCheckedAgain()
+    {
+        // The same push, refused once; then the landblock it stands in is unloaded. The request now names a
+        // cell that is not in the world, which the input checks refuse, naming it (the remembered refusal
+        // must not answer for a world that lost cells).
+        var world = TestScenes.Door();
+        var engine = new PhysicsEngine(world);
+        var player = PlayerAgainstTheDoor(world);
+        var state = player.State;
+        var target = Ahead(state, HeadOn);
+        Assert.False(engine.Resolve(player.Description, state, target).Succeeded);
+
+        world.UnloadLandblock(state.Position.CellId >> 16);
+
+        var error = Assert.Throws<ArgumentException>(() => engine.Resolve(player.Description, state, target));
+        Assert.StartsWith("state.position.cell", error.Message);
+    }
+
+    [Fact]
     public void TwoMoversResolvedInTurnByOneEngine_EachStopAtTheirOwnDistance()
     {
         // The engine keeps the spheres of the position a move ended at for the next move; a different
