@@ -143,4 +143,53 @@ public class BodyRulesTests
         Assert.Equal(-0.375f, driver.Body.Velocity.Y, 5);
         Assert.Equal(0f, driver.Body.Velocity.Z);
     }
+
+    /// <summary>
+    /// handle_all_collisions (CPhysicsObj.c:6227): an Inelastic body that hits something stops dead. A ball (one
+    /// sphere, radius 0.3 m) flying at 3 m/s north, 1.5 m up, its front 0.05 m short of a wall's face (y = 101):
+    /// within the first 1/30 s quantum (0.1 m) it hits the wall, and its whole velocity, gravity's −9.8/30 m/s
+    /// included, is zeroed. An elastic body would keep (0, 3 − 3 × 1.05, −0.3267) = (0, −0.15, −0.3267).
+    /// </summary>
+    [Fact]
+    public void AnInelasticBody_StopsDeadOnAWall()
+    {
+        var world = TestGeometry.FlatWorld();
+        BodyDriver.AddBox(world, 0x7000_0031, new Vector3(90, 101, 0), new Vector3(110, 102, 3));
+        var ball = new MoverDescription(0x50000007, [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.3f)], 0f, 0f, PhysicsState.Gravity | PhysicsState.Inelastic);
+        var driver = new BodyDriver(world, ball, MoverState.Airborne(TestGeometry.At(100, 100.65f, 1.5f)), BodyState.Object(new Vector3(0, 3, 0)));
+
+        var step = driver.Step(1.0 / 30, Vector3.Zero);
+
+        Assert.True(step.Move.CollisionNormalValid, "the ball should have hit the wall");
+        Assert.Equal(-1f, step.Move.CollisionNormal.Y, 5);
+        Assert.Equal(Vector3.Zero, driver.Body.Velocity);
+    }
+
+    /// <summary>
+    /// handle_all_collisions bounces a body that stays on walkable ground only when it is sledding. A sledding
+    /// body (the player's spheres, no friction) on flat ground slides at (2, 2, 0) m/s at a wall whose face is
+    /// 0.05 m ahead (y = 101): in one 1/30 s quantum it meets the wall and slides along it. Friction 0 keeps the
+    /// velocity; a sledding body on the ground is not held by calc_acceleration, so gravity adds −9.8/30 =
+    /// −0.32667 m/s; the wall's normal (0, −1, 0) then reflects the 2 m/s into it keeping 0.05:
+    /// v = (2, 2 − 2 × 1.05, −0.32667) = (2, −0.1, −0.32667).
+    /// </summary>
+    [Fact]
+    public void ASleddingBodyOnTheGround_BouncesOffAWall()
+    {
+        var world = TestGeometry.FlatWorld();
+        BodyDriver.AddBox(world, 0x7000_0031, new Vector3(90, 101, 0), new Vector3(110, 102, 3));
+        var sled = new MoverDescription(0x50000008, MoverDescription.Player().Spheres, 0.6f, 0.04f, PhysicsState.Gravity | PhysicsState.Sledding);
+        var body = BodyState.Object(new Vector3(2, 2, 0));
+        body.Friction = 0f;
+        var driver = new BodyDriver(world, sled, MoverState.OnFloor(TestGeometry.At(100, 100.47f, 0), 0f), body);
+
+        var step = driver.Step(1.0 / 30, Vector3.Zero);
+
+        Assert.True(driver.State.OnWalkable, "the sled stays on the ground");
+        Assert.True(step.Move.CollisionNormalValid, "the sled should have met the wall");
+        Assert.Equal(-1f, step.Move.CollisionNormal.Y, 5);
+        Assert.Equal(2f, driver.Body.Velocity.X, 5);
+        Assert.Equal(-0.1f, driver.Body.Velocity.Y, 5);
+        Assert.Equal(-9.8f / 30f, driver.Body.Velocity.Z, 5);
+    }
 }

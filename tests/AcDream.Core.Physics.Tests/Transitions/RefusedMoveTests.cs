@@ -149,6 +149,30 @@ public class RefusedMoveTests
     }
 
     [Fact]
+    public void TheSameRequestOutOfContact_IsNotAnsweredFromTheLastRefusal()
+    {
+        // Standing on flat ground (contact plane z = 0, foot sphere touching it: origin 0.005) and asked to go
+        // 0.1 m straight down: in contact the step is projected onto the contact plane, nothing is left, and the
+        // move is refused before its first sub-step. The same request out of contact (the walkable flag and the
+        // plane unchanged) falls onto the ground and lands there: inserted, in contact, the origin at 0.005.
+        var world = TestGeometry.FlatWorld();
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player();
+        var standing = MoverState.OnFloor(TestGeometry.At(100, 100, 0.005f), 0f);
+        var down = Ahead(standing, new Vector3(0, 0, -0.1f));
+        var refused = engine.Resolve(player, standing, down);
+        Assert.False(refused.Succeeded, "straight down into the contact plane leaves nothing to move");
+
+        var falling = standing;
+        falling.Contact = false;
+        var result = engine.Resolve(player, falling, down);
+
+        Assert.True(result.Succeeded, "out of contact the step is not projected away");
+        Assert.True(result.Next.Contact, "it lands on the ground");
+        Assert.Equal(0.005f, result.Next.Position.Origin.Z, 3e-3f);
+    }
+
+    [Fact]
     public void ARefusedRequest_AfterItsLandblockIsUnloaded_IsCheckedAgain()
     {
         // The same push, refused once; then the landblock it stands in is unloaded. The request now names a
