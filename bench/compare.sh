@@ -65,9 +65,9 @@ else
   head_label="now: work tree on $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src || echo ' (with changes)')"
 fi
 
-fp_base=$(dotnet "$tmp/out-base/$dll" fingerprint | awk '{print $2}')
-fp_head=$(dotnet "$tmp/out-head/$dll" fingerprint | awk '{print $2}')
-fingerprints="fingerprint (every result on the driver's approach grid): base $fp_base, now $fp_head, $([ "$fp_base" = "$fp_head" ] && echo "bit-identical" || echo "DIFFERENT")"
+fp_base=$(dotnet "$tmp/out-base/$dll" fingerprint | awk '{printf "%s%s", (NR > 1 ? " " : ""), $2}')
+fp_head=$(dotnet "$tmp/out-head/$dll" fingerprint | awk '{printf "%s%s", (NR > 1 ? " " : ""), $2}')
+fingerprints="fingerprints (every result on the driver's approach grid; every body step on its body grid): base $fp_base, now $fp_head, $([ "$fp_base" = "$fp_head" ] && echo "bit-identical" || echo "DIFFERENT")"
 
 if ((callgrind)); then
   transitions=${count:-2000}

@@ -12,7 +12,9 @@ namespace AcDream.Core.Physics.Timing;
 /// <c>list</c> prints the workloads (name, transitions per run, description); <c>time [--rounds N] [--ms N] [NAME...]</c> prints, per workload, the
 /// fastest sample's nanoseconds and the bytes allocated per transition; <c>count NAME N</c> resolves a
 /// workload 20 times, then N times between two marks for callgrind (see <see cref="Mark"/>);
-/// <c>fingerprint</c> prints a hash of every result on a grid of approaches (see <see cref="Workload.Fingerprint"/>).
+/// <c>fingerprint</c> prints a hash of every result on a grid of approaches (see <see cref="Workload.Fingerprint"/>), then
+/// one of every body step's result on the same kind of grid (<see cref="Workload.BodyFingerprint"/>). Body workloads
+/// (named <c>body-…</c>) time one <c>PhysicsEngine.Step</c> per frame.
 /// </summary>
 public static class Program
 {
@@ -42,6 +44,7 @@ public static class Program
                 return 0;
             case "fingerprint":
                 Console.WriteLine($"fingerprint {Workload.Fingerprint():X16}");
+                Console.WriteLine($"body-fingerprint {Workload.BodyFingerprint():X16}");
                 return 0;
             case "time":
                 return Time(workloads, args.Skip(1).ToArray());

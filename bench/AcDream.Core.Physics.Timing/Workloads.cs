@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Shapes;
@@ -17,6 +18,18 @@ internal sealed class Workload
     private readonly MoverDescription _player;
     private MoverState _start;
     private readonly Vector3 _step;
+    // A body workload (Name starts "body-"): each frame is one PhysicsEngine.Step of _elapsed seconds with
+    // _step as the desired velocity, the body state carried from step to step; null for a Resolve workload.
+    private readonly BodyState? _body;
+    private readonly double _elapsed;
+
+    private Workload(string name, string description, PhysicsWorld world, MoverState start, BodyState body, Vector3 desired, double elapsed,
+        int frames)
+        : this(name, description, world, start, desired, frames)
+    {
+        _body = body;
+        _elapsed = elapsed;
+    }
 
     private Workload(string name, string description, PhysicsWorld world, MoverState start, Vector3 step, int frames, int skip)
         : this(name, description, world, start, step, frames)
@@ -46,6 +59,8 @@ internal sealed class Workload
     /// <summary>Resolves every frame once; returns the final X + Y (a data dependency on every frame).</summary>
     public float Run()
     {
+        if (_body is { } body)
+            return RunBody(body);
         var state = _start;
         for (int i = 0; i < Frames; i++)
         {
@@ -56,9 +71,23 @@ internal sealed class Workload
         return state.Position.Frame.Origin.X + state.Position.Frame.Origin.Y;
     }
 
+    private float RunBody(BodyState body)
+    {
+        var state = _start;
+        for (int i = 0; i < Frames; i++)
+        {
+            var r = _engine.Step(_player, state, body, _elapsed, _step);
+            state = r.Next;
+            body = r.Body;
+        }
+        return state.Position.Frame.Origin.X + state.Position.Frame.Origin.Y;
+    }
+
     /// <summary>Blocked frames of one run (the mover did not move), for the description.</summary>
     public int BlockedFrames()
     {
+        if (_body is not null)
+            return 0;
         var state = _start;
         int blocked = 0;
         for (int i = 0; i < Frames; i++)
@@ -99,7 +128,73 @@ internal sealed class Workload
             DoorWorld(0, 0), Standing(99.5f, FrontStop), FaceSlideStep, 8),
         new("slide-ne+100", "the NE slide with 100 props in the door's cell", DoorWorld(100, 0),
             Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
+        new("body-slide", "the face slide as a body step: 8 steps of 1/30 s at 4 m/s heading 20° into the face",
+            DoorWorld(0, 0), Standing(99.5f, FrontStop), BodyState.Creature(), FaceSlideStep * 30f, 1.0 / 30.0, 8),
+        new("body-walk", "a body walking 3 m/s in the open: 30 steps of 1/30 s (one quantum each)",
+            DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(3f, 0, 0), 1.0 / 30.0, 30),
+        new("body-5hz", "a creature at the 5 Hz rate: 10 steps of 0.2 s (one quantum each) at 2.5 m/s in the open",
+            DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(0, 2.5f, 0), 0.2, 10),
+        new("body-3q", "a body step of 0.5 s (three quanta: 0.2, 0.2, 0.1 s) at 2.5 m/s in the open: 6 steps",
+            DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(2.5f, 0, 0), 0.5, 6),
     ];
+
+    /// <summary>
+    /// The body steps' fingerprint: FNV-1a over every field of every step's result (state, body, quanta,
+    /// transitions) on the <see cref="Fingerprint"/> grid's approaches walked as body steps of 1/30 s and
+    /// of 0.5 s (three quanta), in the same world.
+    /// </summary>
+    public static ulong BodyFingerprint()
+    {
+        var engine = new PhysicsEngine(DoorWorld(100, 300));
+        var player = MoverDescription.Player();
+        ulong h = 14695981039346656037UL;
+        void Add(uint x)
+        {
+            for (int i = 0; i < 4; i++)
+            {
+                h ^= (byte)(x >> (8 * i));
+                h *= 1099511628211UL;
+            }
+        }
+        void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
+        void AddV(Vector3 v) { AddF(v.X); AddF(v.Y); AddF(v.Z); }
+        foreach (double elapsed in new[] { 1.0 / 30.0, 0.5 })
+            foreach (float lateral in new[] { -0.7f, -0.2f, 0f, 0.45f })
+                for (int heading = -85; heading <= 85; heading += 10)
+                    foreach (float speed in new[] { 1f, 4f, 10f })
+                    {
+                        float a = heading * MathF.PI / 180f;
+                        var dir = new Vector3(MathF.Sin(a), MathF.Cos(a), 0);
+                        var state = Standing(100f + lateral - 2f * dir.X, FrontStop - 2f * dir.Y);
+                        var body = BodyState.Creature();
+                        for (int f = 0; f < 30; f++)
+                        {
+                            var r = engine.Step(player, state, body, elapsed, dir * speed);
+                            var n = r.Next;
+                            var m = r.Move;
+                            Add(n.Position.CellId);
+                            AddV(n.Position.Frame.Origin);
+                            AddF(n.Position.Frame.Orientation.W);
+                            AddF(n.Position.Frame.Orientation.Z);
+                            Add((uint)((m.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
+                                | (m.CollisionNormalValid ? 16 : 0) | (m.CollidedWithEnvironment ? 32 : 0) | (m.VelocityKilled ? 64 : 0)));
+                            AddV(n.ContactPlane.Normal);
+                            AddF(n.ContactPlane.D);
+                            AddV(n.SlidingNormal);
+                            AddV(m.CollisionNormal);
+                            Add(m.LastCollidedObject);
+                            foreach (uint id in m.CollidedObjects.Span)
+                                Add(id);
+                            AddV(r.Body.Velocity);
+                            AddV(r.Body.Acceleration);
+                            Add((uint)r.Body.StationaryFall);
+                            Add((uint)(r.Quanta | (r.Transitions << 8)));
+                            state = n;
+                            body = r.Body;
+                        }
+                    }
+        return h;
+    }
 
     /// <summary>
     /// A fingerprint of the engine's results: FNV-1a over every field of every frame's result on a grid of
