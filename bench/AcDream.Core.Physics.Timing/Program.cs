@@ -73,7 +73,8 @@ public static class Program
     }
 
     /// <summary>
-    /// Warms every selected workload up for 0.5 s (the JIT's tiers), then takes <c>rounds</c> samples of
+    /// Warms every selected workload up for 0.5 s (the JIT's tiers) and then all of them in turn until the JIT
+    /// settles, then takes <c>rounds</c> samples of
     /// about <c>ms</c> milliseconds of each, round-robin, and reports the fastest (the least disturbed on
     /// a shared machine).
     /// </summary>
@@ -110,6 +111,28 @@ public static class Program
             for (int i = 0; i < reps[k]; i++)
                 sink += w.Run();
             bytes[k] = (GC.GetAllocatedBytesForCurrentThread() - before) / ((double)reps[k] * w.Frames);
+        }
+        // Then round after round of all of them until the JIT has compiled nothing for a full second (at most
+        // 60 s): on a loaded machine the background compiler waits for a core, and a sample of first-tier code
+        // is not the code that will run (the queries job found the same).
+        var total = Stopwatch.StartNew();
+        var quiet = Stopwatch.StartNew();
+        long compiled = System.Runtime.JitInfo.GetCompiledMethodCount();
+        int quietRounds = 0;
+        while (total.Elapsed.TotalSeconds < 60)
+        {
+            for (int k = 0; k < selected.Count; k++)
+                for (int i = 0; i < reps[k]; i++)
+                    sink += selected[k].Run();
+            long now = System.Runtime.JitInfo.GetCompiledMethodCount();
+            if (now != compiled)
+            {
+                compiled = now;
+                quiet.Restart();
+                quietRounds = 0;
+            }
+            else if (++quietRounds >= 3 && quiet.Elapsed.TotalSeconds >= 1)
+                break;
         }
         for (int r = 0; r < rounds; r++)
             for (int k = 0; k < selected.Count; k++)

@@ -22,6 +22,14 @@ internal sealed class Workload
     // _step as the desired velocity, the body state carried from step to step; null for a Resolve workload.
     private readonly BodyState? _body;
     private readonly double _elapsed;
+    // A query workload (Name starts "q-"): one call of a world query per frame; null otherwise.
+    private readonly Func<float>? _query;
+
+    private Workload(string name, string description, PhysicsWorld world, Func<float> query)
+        : this(name, description, world, default, Vector3.Zero, 1)
+    {
+        _query = query;
+    }
 
     private Workload(string name, string description, PhysicsWorld world, MoverState start, BodyState body, Vector3 desired, double elapsed,
         int frames)
@@ -59,6 +67,8 @@ internal sealed class Workload
     /// <summary>Resolves every frame once; returns the final X + Y (a data dependency on every frame).</summary>
     public float Run()
     {
+        if (_query is not null)
+            return _query();
         if (_body is { } body)
             return RunBody(body);
         var state = _start;
@@ -86,7 +96,7 @@ internal sealed class Workload
     /// <summary>Blocked frames of one run (the mover did not move), for the description.</summary>
     public int BlockedFrames()
     {
-        if (_body is not null)
+        if (_body is not null || _query is not null)
             return 0;
         var state = _start;
         int blocked = 0;
@@ -136,7 +146,42 @@ internal sealed class Workload
             DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(0, 2.5f, 0), 0.2, 10),
         new("body-3q", "a body step of 0.5 s (three quanta: 0.2, 0.2, 0.1 s) at 2.5 m/s in the open: 6 steps",
             DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(2.5f, 0, 0), 0.5, 6),
+        .. QueryWorkloads(),
     ];
+
+    /// <summary>
+    /// The queries bench's calls on the built-in cottage (a room behind a doorway, the building's shell, the door
+    /// in the doorway), one call per run, and the same run's player transition (<c>q-resolve</c>) the issue
+    /// measures them against.
+    /// </summary>
+    private static IEnumerable<Workload> QueryWorkloads()
+    {
+        const uint land = 0xA9B40025, room = 0xA9B40100;
+        var world = SceneLibrary.Load("cottage").World;
+        var query = new Queries.WorldQuery(world);
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player();
+        var found = new Queries.ObjectOverlap[16];
+        static Position At(uint cell, float x, float y, float z) => new(cell, new Vector3(x, y, z));
+        var walker = MoverState.OnFloor(At(land, 100, 97, 0), 0f);
+        return
+        [
+            new("q-sphere", "SphereCast: 0.3 m, 6 m through the doorway, hits the door", world,
+                () => query.SphereCast(At(land, 100, 97, 1), new Vector3(100, 103, 1), 0.3f, out var a) ? a.Fraction : -1f),
+            new("q-ray", "RayCast: a pick along an 8.5 m diagonal", world,
+                () => query.RayCast(At(land, 97, 97, 1.5f), new Vector3(103, 103, 1.5f), out var b) ? b.Fraction : -1f),
+            new("q-floor-in", "TryFindFloor indoors (the room's floor)", world,
+                () => query.TryFindFloor(At(land, 100, 102, 2), 5, out var c) ? c.Point.Z : -1f),
+            new("q-floor-out", "TryFindFloor outdoors (terrain)", world,
+                () => query.TryFindFloor(At(land, 95, 95, 2), 5, out var d) ? d.Point.Z : -1f),
+            new("q-overlap", "OverlapSphere: 1 m at the door", world,
+                () => query.OverlapSphere(At(land, 100, 99.5f, 1), 1f, found)),
+            new("q-camera", "CameraArm: 5 m in the room, stops at the wall", world,
+                () => query.CameraArm(At(room, 100, 101, 1.5f), new Vector3(100, 106, 1.5f)).Camera.Origin.Y),
+            new("q-resolve", "Resolve: the player's 0.1 m step outside the cottage, for scale", world,
+                () => engine.Resolve(player, walker, At(land, 100, 97.1f, 0)).Position.Origin.Y),
+        ];
+    }
 
     /// <summary>
     /// The body steps' fingerprint: FNV-1a over every field of every step's result (state, body, quanta,
