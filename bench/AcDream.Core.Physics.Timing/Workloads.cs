@@ -192,17 +192,7 @@ internal sealed class Workload
     {
         var engine = new PhysicsEngine(DoorWorld(100, 300));
         var player = MoverDescription.Player();
-        ulong h = 14695981039346656037UL;
-        void Add(uint x)
-        {
-            for (int i = 0; i < 4; i++)
-            {
-                h ^= (byte)(x >> (8 * i));
-                h *= 1099511628211UL;
-            }
-        }
-        void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
-        void AddV(Vector3 v) { AddF(v.X); AddF(v.Y); AddF(v.Z); }
+        var h = new Fnv();
         foreach (double elapsed in new[] { 1.0 / 30.0, 0.5 })
             foreach (float lateral in new[] { -0.7f, -0.2f, 0f, 0.45f })
                 for (int heading = -85; heading <= 85; heading += 10)
@@ -215,30 +205,16 @@ internal sealed class Workload
                         for (int f = 0; f < 30; f++)
                         {
                             var r = engine.Step(player, state, body, elapsed, dir * speed);
-                            var n = r.Next;
-                            var m = r.Move;
-                            Add(n.Position.CellId);
-                            AddV(n.Position.Frame.Origin);
-                            AddF(n.Position.Frame.Orientation.W);
-                            AddF(n.Position.Frame.Orientation.Z);
-                            Add((uint)((m.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
-                                | (m.CollisionNormalValid ? 16 : 0) | (m.CollidedWithEnvironment ? 32 : 0) | (m.VelocityKilled ? 64 : 0)));
-                            AddV(n.ContactPlane.Normal);
-                            AddF(n.ContactPlane.D);
-                            AddV(n.SlidingNormal);
-                            AddV(m.CollisionNormal);
-                            Add(m.LastCollidedObject);
-                            foreach (uint id in m.CollidedObjects.Span)
-                                Add(id);
-                            AddV(r.Body.Velocity);
-                            AddV(r.Body.Acceleration);
-                            Add((uint)r.Body.StationaryFall);
-                            Add((uint)(r.Quanta | (r.Transitions << 8)));
-                            state = n;
+                            h.AddResult(r.Move);
+                            h.AddV(r.Body.Velocity);
+                            h.AddV(r.Body.Acceleration);
+                            h.Add((uint)r.Body.StationaryFall);
+                            h.Add((uint)(r.Quanta | (r.Transitions << 8)));
+                            state = r.Next;
                             body = r.Body;
                         }
                     }
-        return h;
+        return h.Value;
     }
 
     /// <summary>
@@ -251,17 +227,7 @@ internal sealed class Workload
     {
         var engine = new PhysicsEngine(DoorWorld(100, 300));
         var player = MoverDescription.Player();
-        ulong h = 14695981039346656037UL;
-        void Add(uint x)
-        {
-            for (int i = 0; i < 4; i++)
-            {
-                h ^= (byte)(x >> (8 * i));
-                h *= 1099511628211UL;
-            }
-        }
-        void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
-        void AddV(Vector3 v) { AddF(v.X); AddF(v.Y); AddF(v.Z); }
+        var h = new Fnv();
         foreach (float lateral in new[] { -0.7f, -0.45f, -0.2f, 0f, 0.2f, 0.45f, 0.7f })
             for (int heading = -85; heading <= 85; heading += 5)
                 foreach (float speed in new[] { 1f, 2f, 5f, 10f, 20f, 50f })
@@ -275,25 +241,58 @@ internal sealed class Workload
                         var target = state.Position;
                         target.Frame.Origin += step;
                         var r = engine.Resolve(player, state, target);
+                        h.AddResult(r);
                         var n = r.Next;
-                        Add(n.Position.CellId);
-                        AddV(n.Position.Frame.Origin);
-                        AddF(n.Position.Frame.Orientation.W);
-                        AddF(n.Position.Frame.Orientation.Z);
-                        Add((uint)((r.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
-                            | (r.CollisionNormalValid ? 16 : 0) | (r.CollidedWithEnvironment ? 32 : 0) | (r.VelocityKilled ? 64 : 0)));
-                        AddV(n.ContactPlane.Normal);
-                        AddF(n.ContactPlane.D);
-                        Add(n.ContactPlaneCellId);
-                        AddV(n.SlidingNormal);
-                        AddV(r.CollisionNormal);
-                        Add(r.LastCollidedObject);
-                        foreach (uint id in r.CollidedObjects.Span)
-                            Add(id);
                         state = n;
                     }
                 }
-        return h;
+        return h.Value;
+    }
+
+    /// <summary>FNV-1a over the bytes of the values added, for the fingerprints.</summary>
+    private sealed class Fnv
+    {
+        public ulong Value { get; private set; } = 14695981039346656037UL;
+
+        public void Add(uint x)
+        {
+            ulong h = Value;
+            for (int i = 0; i < 4; i++)
+            {
+                h ^= (byte)(x >> (8 * i));
+                h *= 1099511628211UL;
+            }
+            Value = h;
+        }
+
+        public void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
+
+        public void AddV(Vector3 v)
+        {
+            AddF(v.X);
+            AddF(v.Y);
+            AddF(v.Z);
+        }
+
+        /// <summary>Every field of a move's result, in a fixed order.</summary>
+        public void AddResult(in MoveResult r)
+        {
+            var n = r.Next;
+            Add(n.Position.CellId);
+            AddV(n.Position.Frame.Origin);
+            AddF(n.Position.Frame.Orientation.W);
+            AddF(n.Position.Frame.Orientation.Z);
+            Add((uint)((r.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
+                | (r.CollisionNormalValid ? 16 : 0) | (r.CollidedWithEnvironment ? 32 : 0) | (r.VelocityKilled ? 64 : 0)));
+            AddV(n.ContactPlane.Normal);
+            AddF(n.ContactPlane.D);
+            Add(n.ContactPlaneCellId);
+            AddV(n.SlidingNormal);
+            AddV(r.CollisionNormal);
+            Add(r.LastCollidedObject);
+            foreach (uint id in r.CollidedObjects.Span)
+                Add(id);
+        }
     }
 
     private static MoverState Standing(float x, float y)
