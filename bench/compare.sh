@@ -8,6 +8,10 @@
 # against BASE's library, in a temporary git worktree, and once against the work tree's library (or,
 # with --head, against COMMIT's, in a second temporary worktree).
 #
+# Workloads (the driver's `list`): door-scene transitions, body steps (body-*, one PhysicsEngine.Step each) and
+# world queries on the cottage (q-*, with q-resolve for scale); none named: all of them. Both fingerprints
+# (transitions, body steps) are compared.
+#
 # Wall clock: runs the two builds alternately PAIRS times (default 5; the order swaps every pair) and
 # prints, per workload, the median over the runs of each build's fastest sample (ns per transition), the
 # bytes allocated per transition, and the ratio base / work tree (above 1: the work tree is faster).
