@@ -8,6 +8,10 @@
 # against BASE's library, in a temporary git worktree, and once against the work tree's library (or,
 # with --head, against COMMIT's, in a second temporary worktree).
 #
+# Workloads (the driver's `list`): door-scene transitions, body steps (body-*, one PhysicsEngine.Step each) and
+# world queries on the cottage (q-*, with q-resolve for scale); none named: all of them. Both fingerprints
+# (transitions, body steps) are compared.
+#
 # Wall clock: runs the two builds alternately PAIRS times (default 5; the order swaps every pair) and
 # prints, per workload, the median over the runs of each build's fastest sample (ns per transition), the
 # bytes allocated per transition, and the ratio base / work tree (above 1: the work tree is faster).
@@ -65,9 +69,9 @@ else
   head_label="now: work tree on $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src || echo ' (with changes)')"
 fi
 
-fp_base=$(dotnet "$tmp/out-base/$dll" fingerprint | awk '{print $2}')
-fp_head=$(dotnet "$tmp/out-head/$dll" fingerprint | awk '{print $2}')
-fingerprints="fingerprint (every result on the driver's approach grid): base $fp_base, now $fp_head, $([ "$fp_base" = "$fp_head" ] && echo "bit-identical" || echo "DIFFERENT")"
+fp_base=$(dotnet "$tmp/out-base/$dll" fingerprint | awk '{printf "%s%s", (NR > 1 ? " " : ""), $2}')
+fp_head=$(dotnet "$tmp/out-head/$dll" fingerprint | awk '{printf "%s%s", (NR > 1 ? " " : ""), $2}')
+fingerprints="fingerprints (every result on the driver's approach grid; every body step on its body grid): base $fp_base, now $fp_head, $([ "$fp_base" = "$fp_head" ] && echo "bit-identical" || echo "DIFFERENT")"
 
 if ((callgrind)); then
   transitions=${count:-2000}

@@ -12,7 +12,9 @@ namespace AcDream.Core.Physics.Timing;
 /// <c>list</c> prints the workloads (name, transitions per run, description); <c>time [--rounds N] [--ms N] [NAME...]</c> prints, per workload, the
 /// fastest sample's nanoseconds and the bytes allocated per transition; <c>count NAME N</c> resolves a
 /// workload 20 times, then N times between two marks for callgrind (see <see cref="Mark"/>);
-/// <c>fingerprint</c> prints a hash of every result on a grid of approaches (see <see cref="Workload.Fingerprint"/>).
+/// <c>fingerprint</c> prints a hash of every result on a grid of approaches (see <see cref="Workload.Fingerprint"/>), then
+/// one of every body step's result on the same kind of grid (<see cref="Workload.BodyFingerprint"/>). Body workloads
+/// (named <c>body-…</c>) time one <c>PhysicsEngine.Step</c> per frame.
 /// </summary>
 public static class Program
 {
@@ -42,6 +44,7 @@ public static class Program
                 return 0;
             case "fingerprint":
                 Console.WriteLine($"fingerprint {Workload.Fingerprint():X16}");
+                Console.WriteLine($"body-fingerprint {Workload.BodyFingerprint():X16}");
                 return 0;
             case "time":
                 return Time(workloads, args.Skip(1).ToArray());
@@ -70,7 +73,8 @@ public static class Program
     }
 
     /// <summary>
-    /// Warms every selected workload up for 0.5 s (the JIT's tiers), then takes <c>rounds</c> samples of
+    /// Warms every selected workload up for 0.5 s (the JIT's tiers) and then all of them in turn until the JIT
+    /// settles, then takes <c>rounds</c> samples of
     /// about <c>ms</c> milliseconds of each, round-robin, and reports the fastest (the least disturbed on
     /// a shared machine).
     /// </summary>
@@ -107,6 +111,28 @@ public static class Program
             for (int i = 0; i < reps[k]; i++)
                 sink += w.Run();
             bytes[k] = (GC.GetAllocatedBytesForCurrentThread() - before) / ((double)reps[k] * w.Frames);
+        }
+        // Then round after round of all of them until the JIT has compiled nothing for a full second (at most
+        // 60 s): on a loaded machine the background compiler waits for a core, and a sample of first-tier code
+        // is not the code that will run (the queries job found the same).
+        var total = Stopwatch.StartNew();
+        var quiet = Stopwatch.StartNew();
+        long compiled = System.Runtime.JitInfo.GetCompiledMethodCount();
+        int quietRounds = 0;
+        while (total.Elapsed.TotalSeconds < 60)
+        {
+            for (int k = 0; k < selected.Count; k++)
+                for (int i = 0; i < reps[k]; i++)
+                    sink += selected[k].Run();
+            long now = System.Runtime.JitInfo.GetCompiledMethodCount();
+            if (now != compiled)
+            {
+                compiled = now;
+                quiet.Restart();
+                quietRounds = 0;
+            }
+            else if (++quietRounds >= 3 && quiet.Elapsed.TotalSeconds >= 1)
+                break;
         }
         for (int r = 0; r < rounds; r++)
             for (int k = 0; k < selected.Count; k++)

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Shapes;
@@ -17,6 +18,26 @@ internal sealed class Workload
     private readonly MoverDescription _player;
     private MoverState _start;
     private readonly Vector3 _step;
+    // A body workload (Name starts "body-"): each frame is one PhysicsEngine.Step of _elapsed seconds with
+    // _step as the desired velocity, the body state carried from step to step; null for a Resolve workload.
+    private readonly BodyState? _body;
+    private readonly double _elapsed;
+    // A query workload (Name starts "q-"): one call of a world query per frame; null otherwise.
+    private readonly Func<float>? _query;
+
+    private Workload(string name, string description, PhysicsWorld world, Func<float> query)
+        : this(name, description, world, default, Vector3.Zero, 1)
+    {
+        _query = query;
+    }
+
+    private Workload(string name, string description, PhysicsWorld world, MoverState start, BodyState body, Vector3 desired, double elapsed,
+        int frames)
+        : this(name, description, world, start, desired, frames)
+    {
+        _body = body;
+        _elapsed = elapsed;
+    }
 
     private Workload(string name, string description, PhysicsWorld world, MoverState start, Vector3 step, int frames, int skip)
         : this(name, description, world, start, step, frames)
@@ -46,6 +67,10 @@ internal sealed class Workload
     /// <summary>Resolves every frame once; returns the final X + Y (a data dependency on every frame).</summary>
     public float Run()
     {
+        if (_query is not null)
+            return _query();
+        if (_body is { } body)
+            return RunBody(body);
         var state = _start;
         for (int i = 0; i < Frames; i++)
         {
@@ -56,9 +81,23 @@ internal sealed class Workload
         return state.Position.Frame.Origin.X + state.Position.Frame.Origin.Y;
     }
 
+    private float RunBody(BodyState body)
+    {
+        var state = _start;
+        for (int i = 0; i < Frames; i++)
+        {
+            var r = _engine.Step(_player, state, body, _elapsed, _step);
+            state = r.Next;
+            body = r.Body;
+        }
+        return state.Position.Frame.Origin.X + state.Position.Frame.Origin.Y;
+    }
+
     /// <summary>Blocked frames of one run (the mover did not move), for the description.</summary>
     public int BlockedFrames()
     {
+        if (_body is not null || _query is not null)
+            return 0;
         var state = _start;
         int blocked = 0;
         for (int i = 0; i < Frames; i++)
@@ -99,7 +138,84 @@ internal sealed class Workload
             DoorWorld(0, 0), Standing(99.5f, FrontStop), FaceSlideStep, 8),
         new("slide-ne+100", "the NE slide with 100 props in the door's cell", DoorWorld(100, 0),
             Standing(99.6f, 99.0f), new Vector3(0.0707f, 0.0707f, 0), 30),
+        new("body-slide", "the face slide as a body step: 8 steps of 1/30 s at 4 m/s heading 20° into the face",
+            DoorWorld(0, 0), Standing(99.5f, FrontStop), BodyState.Creature(), FaceSlideStep * 30f, 1.0 / 30.0, 8),
+        new("body-walk", "a body walking 3 m/s in the open: 30 steps of 1/30 s (one quantum each)",
+            DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(3f, 0, 0), 1.0 / 30.0, 30),
+        new("body-5hz", "a creature at the 5 Hz rate: 10 steps of 0.2 s (one quantum each) at 2.5 m/s in the open",
+            DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(0, 2.5f, 0), 0.2, 10),
+        new("body-3q", "a body step of 0.5 s (three quanta: 0.2, 0.2, 0.1 s) at 2.5 m/s in the open: 6 steps",
+            DoorWorld(0, 0), Standing(60f, 80f), BodyState.Creature(), new Vector3(2.5f, 0, 0), 0.5, 6),
+        .. QueryWorkloads(),
     ];
+
+    /// <summary>
+    /// The queries bench's calls on the built-in cottage (a room behind a doorway, the building's shell, the door
+    /// in the doorway), one call per run, and the same run's player transition (<c>q-resolve</c>) the issue
+    /// measures them against.
+    /// </summary>
+    private static IEnumerable<Workload> QueryWorkloads()
+    {
+        const uint land = 0xA9B40025, room = 0xA9B40100;
+        var world = SceneLibrary.Load("cottage").World;
+        var query = new Queries.WorldQuery(world);
+        var engine = new PhysicsEngine(world);
+        var player = MoverDescription.Player();
+        var found = new Queries.ObjectOverlap[16];
+        static Position At(uint cell, float x, float y, float z) => new(cell, new Vector3(x, y, z));
+        var walker = MoverState.OnFloor(At(land, 100, 97, 0), 0f);
+        return
+        [
+            new("q-sphere", "SphereCast: 0.3 m, 6 m through the doorway, hits the door", world,
+                () => query.SphereCast(At(land, 100, 97, 1), new Vector3(100, 103, 1), 0.3f, out var a) ? a.Fraction : -1f),
+            new("q-ray", "RayCast: a pick along an 8.5 m diagonal", world,
+                () => query.RayCast(At(land, 97, 97, 1.5f), new Vector3(103, 103, 1.5f), out var b) ? b.Fraction : -1f),
+            new("q-floor-in", "TryFindFloor indoors (the room's floor)", world,
+                () => query.TryFindFloor(At(land, 100, 102, 2), 5, out var c) ? c.Point.Z : -1f),
+            new("q-floor-out", "TryFindFloor outdoors (terrain)", world,
+                () => query.TryFindFloor(At(land, 95, 95, 2), 5, out var d) ? d.Point.Z : -1f),
+            new("q-overlap", "OverlapSphere: 1 m at the door", world,
+                () => query.OverlapSphere(At(land, 100, 99.5f, 1), 1f, found)),
+            new("q-camera", "CameraArm: 5 m in the room, stops at the wall", world,
+                () => query.CameraArm(At(room, 100, 101, 1.5f), new Vector3(100, 106, 1.5f)).Camera.Origin.Y),
+            new("q-resolve", "Resolve: the player's 0.1 m step outside the cottage, for scale", world,
+                () => engine.Resolve(player, walker, At(land, 100, 97.1f, 0)).Position.Origin.Y),
+        ];
+    }
+
+    /// <summary>
+    /// The body steps' fingerprint: FNV-1a over every field of every step's result (state, body, quanta,
+    /// transitions) on the <see cref="Fingerprint"/> grid's approaches walked as body steps of 1/30 s and
+    /// of 0.5 s (three quanta), in the same world.
+    /// </summary>
+    public static ulong BodyFingerprint()
+    {
+        var engine = new PhysicsEngine(DoorWorld(100, 300));
+        var player = MoverDescription.Player();
+        var h = new Fnv();
+        foreach (double elapsed in new[] { 1.0 / 30.0, 0.5 })
+            foreach (float lateral in new[] { -0.7f, -0.2f, 0f, 0.45f })
+                for (int heading = -85; heading <= 85; heading += 10)
+                    foreach (float speed in new[] { 1f, 4f, 10f })
+                    {
+                        float a = heading * MathF.PI / 180f;
+                        var dir = new Vector3(MathF.Sin(a), MathF.Cos(a), 0);
+                        var state = Standing(100f + lateral - 2f * dir.X, FrontStop - 2f * dir.Y);
+                        var body = BodyState.Creature();
+                        for (int f = 0; f < 30; f++)
+                        {
+                            var r = engine.Step(player, state, body, elapsed, dir * speed);
+                            h.AddResult(r.Move);
+                            h.AddV(r.Body.Velocity);
+                            h.AddV(r.Body.Acceleration);
+                            h.Add((uint)r.Body.StationaryFall);
+                            h.Add((uint)(r.Quanta | (r.Transitions << 8)));
+                            state = r.Next;
+                            body = r.Body;
+                        }
+                    }
+        return h.Value;
+    }
 
     /// <summary>
     /// A fingerprint of the engine's results: FNV-1a over every field of every frame's result on a grid of
@@ -111,17 +227,7 @@ internal sealed class Workload
     {
         var engine = new PhysicsEngine(DoorWorld(100, 300));
         var player = MoverDescription.Player();
-        ulong h = 14695981039346656037UL;
-        void Add(uint x)
-        {
-            for (int i = 0; i < 4; i++)
-            {
-                h ^= (byte)(x >> (8 * i));
-                h *= 1099511628211UL;
-            }
-        }
-        void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
-        void AddV(Vector3 v) { AddF(v.X); AddF(v.Y); AddF(v.Z); }
+        var h = new Fnv();
         foreach (float lateral in new[] { -0.7f, -0.45f, -0.2f, 0f, 0.2f, 0.45f, 0.7f })
             for (int heading = -85; heading <= 85; heading += 5)
                 foreach (float speed in new[] { 1f, 2f, 5f, 10f, 20f, 50f })
@@ -135,25 +241,58 @@ internal sealed class Workload
                         var target = state.Position;
                         target.Frame.Origin += step;
                         var r = engine.Resolve(player, state, target);
+                        h.AddResult(r);
                         var n = r.Next;
-                        Add(n.Position.CellId);
-                        AddV(n.Position.Frame.Origin);
-                        AddF(n.Position.Frame.Orientation.W);
-                        AddF(n.Position.Frame.Orientation.Z);
-                        Add((uint)((r.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
-                            | (r.CollisionNormalValid ? 16 : 0) | (r.CollidedWithEnvironment ? 32 : 0) | (r.VelocityKilled ? 64 : 0)));
-                        AddV(n.ContactPlane.Normal);
-                        AddF(n.ContactPlane.D);
-                        Add(n.ContactPlaneCellId);
-                        AddV(n.SlidingNormal);
-                        AddV(r.CollisionNormal);
-                        Add(r.LastCollidedObject);
-                        foreach (uint id in r.CollidedObjects.Span)
-                            Add(id);
                         state = n;
                     }
                 }
-        return h;
+        return h.Value;
+    }
+
+    /// <summary>FNV-1a over the bytes of the values added, for the fingerprints.</summary>
+    private sealed class Fnv
+    {
+        public ulong Value { get; private set; } = 14695981039346656037UL;
+
+        public void Add(uint x)
+        {
+            ulong h = Value;
+            for (int i = 0; i < 4; i++)
+            {
+                h ^= (byte)(x >> (8 * i));
+                h *= 1099511628211UL;
+            }
+            Value = h;
+        }
+
+        public void AddF(float f) => Add(BitConverter.SingleToUInt32Bits(f));
+
+        public void AddV(Vector3 v)
+        {
+            AddF(v.X);
+            AddF(v.Y);
+            AddF(v.Z);
+        }
+
+        /// <summary>Every field of a move's result, in a fixed order.</summary>
+        public void AddResult(in MoveResult r)
+        {
+            var n = r.Next;
+            Add(n.Position.CellId);
+            AddV(n.Position.Frame.Origin);
+            AddF(n.Position.Frame.Orientation.W);
+            AddF(n.Position.Frame.Orientation.Z);
+            Add((uint)((r.Succeeded ? 1 : 0) | (n.Contact ? 2 : 0) | (n.OnWalkable ? 4 : 0) | (n.SlidingNormalValid ? 8 : 0)
+                | (r.CollisionNormalValid ? 16 : 0) | (r.CollidedWithEnvironment ? 32 : 0) | (r.VelocityKilled ? 64 : 0)));
+            AddV(n.ContactPlane.Normal);
+            AddF(n.ContactPlane.D);
+            Add(n.ContactPlaneCellId);
+            AddV(n.SlidingNormal);
+            AddV(r.CollisionNormal);
+            Add(r.LastCollidedObject);
+            foreach (uint id in r.CollidedObjects.Span)
+                Add(id);
+        }
     }
 
     private static MoverState Standing(float x, float y)

@@ -225,7 +225,7 @@ public sealed partial class PhysicsEngine
             seeded.Contact = false;
             seeded.OnWalkable = false;
         }
-        var result = ResolveCore(mover, seeded, new Position(begin.CellId, frame), b.StationaryFall);
+        var result = ResolveCore(mover, seeded, new Position(begin.CellId, frame), b.StationaryFall, trusted: true);
         var span = result.CollidedObjects.Span;
         for (int i = 0; i < span.Length; i++)
             _stepCollided.Add(span[i]);

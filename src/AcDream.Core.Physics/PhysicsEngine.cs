@@ -65,15 +65,24 @@ public sealed partial class PhysicsEngine
     /// Thread safety: one engine per thread; engines on several threads may share a world as long as
     /// nothing registers, moves or unregisters objects or adds cells meanwhile.
     /// </summary>
-    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target) => ResolveCore(mover, state, target, 0);
+    public MoveResult Resolve(MoverDescription mover, in MoverState state, Position target)
+    {
+        ArgumentNullException.ThrowIfNull(mover);
+        return ResolveCore(mover, state, target, 0, trusted: false);
+    }
 
     /// <summary>
     /// <see cref="Resolve"/> with the transition's stationary-fall counter seeded, as retail's
     /// CPhysicsObj::transition seeds it from the object's transient state (0 for a mover without a body).
+    /// <paramref name="trusted"/>: the state is one a body step has validated (<see cref="ValidateState"/>, once per
+    /// step) or one the engine's own transition produced since, and the target's cell is the state's; then the
+    /// state is not checked again (the checks could only pass: an accepted transition leaves the mover in a loaded
+    /// cell that holds it — check_other_cells, AdjustToOutside — with a contact plane and sliding normal it
+    /// computed), only its cell is looked up. The poses are still checked, because checking normalizes: a
+    /// caller's rotation retail would not accept is normalized here in the first quantum, as before.
     /// </summary>
-    private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall)
+    private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall, bool trusted)
     {
-        ArgumentNullException.ThrowIfNull(mover);
         if (_lastRefusal.Matches(mover, state, target, _transition.World.Cells.RemovalCount))
             return Refused(state);
         // The start position is read where it lies, copied only when its rotation must be normalized: a
@@ -88,7 +97,7 @@ public sealed partial class PhysicsEngine
             begin = ref normalized;
         }
         Guard.Pose(ref target.Frame, "target");
-        var cell = ValidateState(mover, state, begin, target.CellId);
+        var cell = trusted ? _transition.World.Cells.Get(begin.CellId)! : ValidateState(mover, state, begin, target.CellId);
 
         var t = _transition;
         if (t.RefusesBeforeFirstStep(mover, state, begin, target, out var plan))

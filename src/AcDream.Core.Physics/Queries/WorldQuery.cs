@@ -477,8 +477,9 @@ public sealed class WorldQuery
             return;
         if (env.PhysicsBsp is { } bsp)
         {
-            var bounds = bsp.Bounds;
-            bounds.Center = env.Position.Frame.LocalToGlobal(bounds.Center) + LandDefs.BlockOffset(frameCell, env.Id);
+            // The physics BSP's bounds placed in the cell's landblock: kept by the cell (the same bits) unless empty.
+            var bounds = bsp.Bounds.Radius > 0f ? env.Bounds : new Sphere(env.Position.Frame.LocalToGlobal(bsp.Bounds.Center), bsp.Bounds.Radius);
+            bounds.Center += LandDefs.BlockOffset(frameCell, env.Id);
             if (!ShapeSweep.Reaches(bounds, c, c + d, reach))
                 return;
         }

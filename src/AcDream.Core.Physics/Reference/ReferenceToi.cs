@@ -235,19 +235,24 @@ public static class ReferenceToi
         var feature = ReferenceFeature.None;
         if (!behind)
         {
-            // Over the face the distance is the plane's and the direction the normal, exactly: the difference
-            // of the centre and its projection, far from the frame's origin, carries the rounding of both
-            // (1e-5 rad of tilt at 200 m), enough to read a sphere rolling on the face as moving into it.
-            var projected = c - s0 * n;
-            bool overFace = Inside(projected, polygon);
-            var away = overFace ? s0 * n : c - ClosestPointOnPolygon(c, polygon);
-            float dist = overFace ? s0 : away.Length();
-            // A start touching the polygon (within the slop) is judged at once. Either way the sweep must go
-            // more than the slop into the polygon, or deeper than the slop behind its plane: a ray lying in a
-            // face's plane is within rounding of it, on either side (a tilted face's plane and a point on it
-            // are each a few micrometres off at 60 m).
-            if (dist < r + ContactSlop)
-                return Resting(ray || overFace ? n : away, ray || overFace ? 1f : dist, d, n, out hit, ContactSlop);
+            // A start touching the polygon (within the slop) is judged at once. Its distance from the polygon is
+            // at least its distance from the plane less the polygon's flatness and the rounding (RestingMargin), so
+            // a start farther than that from the plane cannot be touching it: the distance is not worked out.
+            if (!(s0 >= r + ContactSlop + RestingMargin(c, polygon)))
+            {
+                // Over the face the distance is the plane's and the direction the normal, exactly: the difference
+                // of the centre and its projection, far from the frame's origin, carries the rounding of both
+                // (1e-5 rad of tilt at 200 m), enough to read a sphere rolling on the face as moving into it.
+                var projected = c - s0 * n;
+                bool overFace = Inside(projected, polygon);
+                var away = overFace ? s0 * n : c - ClosestPointOnPolygon(c, polygon);
+                float dist = overFace ? s0 : away.Length();
+                // Either way the sweep must go more than the slop into the polygon, or deeper than the slop behind
+                // its plane: a ray lying in a face's plane is within rounding of it, on either side (a tilted
+                // face's plane and a point on it are each a few micrometres off at 60 m).
+                if (dist < r + ContactSlop)
+                    return Resting(ray || overFace ? n : away, ray || overFace ? 1f : dist, d, n, out hit, ContactSlop);
+            }
 
             if (vn < -ApproachTolerance * d.Length() && s0 + vn - r < -ContactSlop)
             {
@@ -285,6 +290,20 @@ public static class ReferenceToi
         hit = new ReferenceHit(best, bestNormal, feature);
         return true;
     }
+
+    /// <summary>
+    /// How much nearer than its plane a point can be to a polygon, with rounding: a vertex may lie off the plane
+    /// through vertex 0 by twice the flatness a polygon is accepted with (1 mm plus a millionth of its largest
+    /// coordinate each way), and the distances are rounded at the scale of the point's and the polygon's
+    /// coordinates (a few float steps). A centimetre plus ten millionths of those coordinates is far above both.
+    /// </summary>
+    private static float RestingMargin(Vector3 c, Polygon polygon)
+    {
+        float largest = MathF.Max(MaxAbs(polygon.BoxMin), MaxAbs(polygon.BoxMax));
+        return 0.01f + 1e-5f * (largest + MaxAbs(c));
+    }
+
+    private static float MaxAbs(Vector3 v) => MathF.Max(MathF.Max(MathF.Abs(v.X), MathF.Abs(v.Y)), MathF.Abs(v.Z));
 
     /// <summary>
     /// Time of impact with a solid world-Z cylinder (retail CylSphere: low point, radius, height): the

@@ -22,6 +22,8 @@ public sealed class CellGraph
     // several times per transition, and array reads are cheaper than a hash lookup. Filled when a
     // landblock is added, emptied when it is removed.
     private readonly CellTable<LandCell> _land = new();
+    // The env cells by id, for Get (array reads rather than the hash of every cell above).
+    private readonly CellTable<EnvCell> _env = new();
 
     // The env cells of each landblock, so a landblock is removed without a search of every cell. A
     // landblock's list is kept, empty, when it is removed (loading it again allocates no list).
@@ -94,6 +96,7 @@ public sealed class CellGraph
         foreach (var cell in cells)
         {
             _cells.Add(cell.Id, cell);
+            _env.Set(cell.Id, cell);
             uint block = cell.Id >> 16;
             if (!_envByBlock.TryGetValue(block, out var list))
                 _envByBlock.Add(block, list = new List<EnvCell>());
@@ -129,7 +132,10 @@ public sealed class CellGraph
         if (_envByBlock.TryGetValue(landblock, out var env))
         {
             foreach (var cell in env)
+            {
                 _cells.Remove(cell.Id);
+                _env.Remove(cell.Id);
+            }
             env.Clear();
         }
         RemovalCount++;
@@ -158,7 +164,7 @@ public sealed class CellGraph
     public Cell? Get(uint cellId) => (cellId & 0xFFFF) - 1 < 64 ? _land.Get(cellId) : GetIndoor(cellId);
 
     // Apart so that Get inlines: the land path is array reads.
-    private Cell? GetIndoor(uint cellId) => _cells.TryGetValue(cellId, out var cell) ? cell : null;
+    private Cell? GetIndoor(uint cellId) => _env.Get(cellId);
 
     /// <summary>The cell with this id; throws naming the id when unknown.</summary>
     internal Cell GetRequired(uint cellId, string field) =>
@@ -262,7 +268,7 @@ public sealed class CellGraph
             {
                 foreach (var sphere in spheres)
                 {
-                    var local = env.Position.Frame.GlobalToLocal(sphere.Center - LandDefs.BlockOffset(position.CellId, env.Id));
+                    var local = env.ToLocal(sphere.Center - LandDefs.BlockOffset(position.CellId, env.Id));
                     float dist = VectorMath.Distance(plane, local);
                     float reach = sphere.Radius + PhysicsConstants.Epsilon;
                     if (dist > -reach && dist < reach) { checkOutside = true; break; }

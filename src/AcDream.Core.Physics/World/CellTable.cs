@@ -1,4 +1,4 @@
-using System.Collections.Generic;
+using System;
 using System.Runtime.CompilerServices;
 
 namespace AcDream.Core.Physics.World;
@@ -6,20 +6,25 @@ namespace AcDream.Core.Physics.World;
 /// <summary>
 /// Values keyed by cell id, for lookups on the per-frame path: outdoor cells (index 1..64) by arrays (landblock
 /// x byte, then y byte, then cell index − 1), so a lookup is three array reads instead of a hash; indoor
-/// cells by a dictionary. Single writer; readers may run in parallel while nothing writes.
+/// cells the same way (cell index − 0x100, the landblock's array grown to the largest index set), since a
+/// camera arm or a mover indoors looks its cells up several times per sub-step. Single writer; readers may
+/// run in parallel while nothing writes.
 /// A struct, kept in a readonly field of its owner, so a lookup starts from the owner (one pointer fewer to
 /// follow); create it with <c>new()</c>.
 /// </summary>
 internal readonly struct CellTable<T> where T : class
 {
     private readonly T?[]?[]?[] _land;
-    private readonly Dictionary<uint, T> _indoor;
+    private readonly T?[]?[]?[] _indoor;
+
+    // The first indoor cell index (retail's env cells are 0x100..0xFFFD).
+    private const uint FirstIndoor = 0x100;
 
     /// <summary>Creates an empty table.</summary>
     public CellTable()
     {
         _land = new T?[]?[]?[256];
-        _indoor = new Dictionary<uint, T>();
+        _indoor = new T?[]?[]?[256];
     }
 
     /// <summary>The value for a cell, or null.</summary>
@@ -56,7 +61,17 @@ internal readonly struct CellTable<T> where T : class
         }
         else
         {
-            _indoor[cellId] = value;
+            uint at = (cellId & 0xFFFF) - FirstIndoor;
+            var column = _indoor[cellId >> 24] ??= new T?[]?[256];
+            ref var block = ref column[(cellId >> 16) & 0xFF];
+            if (block is null || at >= block.Length)
+            {
+                // Grown to hold the index (doubling, at least 16): built once per landblock load.
+                var grown = new T?[Math.Max(Math.Max(16, (int)at + 1), block is null ? 0 : block.Length * 2)];
+                block?.CopyTo(grown, 0);
+                block = grown;
+            }
+            block[at] = value;
         }
     }
 
@@ -74,10 +89,16 @@ internal readonly struct CellTable<T> where T : class
         }
         else
         {
-            _indoor.Remove(cellId);
+            uint at = (cellId & 0xFFFF) - FirstIndoor;
+            if (_indoor[cellId >> 24]?[(cellId >> 16) & 0xFF] is { } block && at < block.Length)
+                block[at] = null;
         }
     }
 
     // Apart so that Get inlines: the outdoor path is the array reads.
-    private T? GetIndoor(uint cellId) => _indoor.TryGetValue(cellId, out var value) ? value : null;
+    private T? GetIndoor(uint cellId)
+    {
+        uint at = (cellId & 0xFFFF) - FirstIndoor;
+        return _indoor[cellId >> 24]?[(cellId >> 16) & 0xFF] is { } block && at < (uint)block.Length ? block[at] : null;
+    }
 }

@@ -61,6 +61,9 @@ public sealed class EnvCell : Cell
         Position = new Position(id, frame);
         PhysicsBsp = physicsBsp;
         CellBsp = cellBsp ?? throw new ArgumentNullException(nameof(cellBsp), $"cell 0x{id:X8}.cellBsp: is required.");
+        Matrix = frame.Matrix;
+        var bounds = PhysicsBsp is { } physics && physics.Bounds.Radius > 0f ? physics.Bounds : CellBsp.Bounds;
+        Bounds = new Sphere(Matrix.FrameToGlobal(bounds.Center, frame.Origin), bounds.Radius);
         _portals = portals is null ? Array.Empty<CellPortal>() : [.. portals];
         for (int i = 0; i < _portals.Length; i++)
             if (_portals[i] is null)
@@ -76,23 +79,34 @@ public sealed class EnvCell : Cell
     /// <summary>The openings.</summary>
     public ReadOnlySpan<CellPortal> Portals => _portals;
 
+    /// <summary>
+    /// The cell frame's rotation matrix (retail Frame::cache), computed once: the frame never changes, and the
+    /// cell searches of every sub-step transform through it several times (the same arithmetic as
+    /// <see cref="Frame.GlobalToLocal"/>, the same bits).
+    /// </summary>
+    internal readonly RotationMatrix Matrix;
+
+    /// <summary>
+    /// The bounding sphere of the cell's physics BSP (or, without one or when it is empty, of its containment
+    /// BSP) in landblock space, placed once (<see cref="Frame.LocalToGlobal"/>'s arithmetic).
+    /// </summary>
+    internal readonly Sphere Bounds;
+
+    /// <summary>Maps a landblock-local point into the cell's space (<see cref="Frame.GlobalToLocal"/> through the kept matrix).</summary>
+    internal Vector3 ToLocal(Vector3 point) => Matrix.FrameToLocal(point, Position.Frame.Origin);
+
     /// <summary>Retail point_in_cell: a landblock-local point lies inside the cell BSP.</summary>
-    public bool ContainsPoint(Vector3 point) => BspQuery.PointInsideCellBsp(CellBsp, Position.Frame.GlobalToLocal(point));
+    public bool ContainsPoint(Vector3 point) => BspQuery.PointInsideCellBsp(CellBsp, ToLocal(point));
 
     /// <summary>Retail sphere_intersects_cell for a landblock-local sphere.</summary>
     internal BoundingType IntersectsSphere(in Sphere sphere) =>
-        BspQuery.SphereIntersectsCellBsp(CellBsp, new Sphere(Position.Frame.GlobalToLocal(sphere.Center), sphere.Radius));
+        BspQuery.SphereIntersectsCellBsp(CellBsp, new Sphere(ToLocal(sphere.Center), sphere.Radius));
 
     /// <summary>
     /// The distance from the bounding sphere of the cell's physics BSP (or, without one or when it is
     /// empty, of its containment BSP; when both are empty, from the cell's origin).
     /// </summary>
-    internal override float DistanceOutside(Vector3 point)
-    {
-        var bounds = PhysicsBsp is { } physics && physics.Bounds.Radius > 0f ? physics.Bounds : CellBsp.Bounds;
-        var centre = Position.Frame.LocalToGlobal(bounds.Center);
-        return MathF.Max(Vector3.Distance(point, centre) - bounds.Radius, 0f);
-    }
+    internal override float DistanceOutside(Vector3 point) => MathF.Max(Vector3.Distance(point, Bounds.Center) - Bounds.Radius, 0f);
 
     /// <inheritdoc />
     internal override TransitionState FindEnvCollisions(Transition transition)

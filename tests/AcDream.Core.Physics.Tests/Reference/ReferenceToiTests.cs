@@ -80,6 +80,34 @@ public class ReferenceToiTests
         Assert.False(ReferenceToi.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, 0.1f), 0.5f, Square, out _));
     }
 
+    /// <summary>
+    /// A start touching a corner that lies off the plane through vertex 0 (a polygon is accepted up to 1 mm off
+    /// flat) is resting on the polygon even though its distance from that plane is more than the radius: the
+    /// resting test is skipped only beyond a margin for the polygon's flatness (RestingMargin). A saddle quad,
+    /// two opposite corners raised 0.9 mm; the sphere's centre 0.2 mm nearer than its radius to the corner that
+    /// stands highest above vertex 0's plane, a little outside the polygon, moving down into it.
+    /// </summary>
+    [Fact]
+    public void Polygon_Resting_OnACornerAboveVertexZerosPlane()
+    {
+        const float h = 0.0009f, r = 0.5f;
+        var saddle = new Polygon([new(-1, -1, 0), new(1, -1, h), new(1, 1, 0), new(-1, 1, h)]);
+        var n = saddle.Plane.Normal;
+        var v = saddle.Vertices;
+        int k = 0;
+        for (int i = 1; i < v.Length; i++)
+            if (Vector3.Dot(n, v[i] - v[0]) > Vector3.Dot(n, v[k] - v[0]))
+                k = i;
+        var outward = Vector3.Normalize(new Vector3(v[k].X, v[k].Y, 0));
+        var c = v[k] + outward * 1e-4f + n * (r - 2e-4f);
+        // The case in question: farther than radius + slop from vertex 0's plane, nearer than the radius to the corner.
+        Assert.True(Vector3.Dot(n, c - v[0]) > r + ReferenceToi.ContactSlop + 1e-4f, $"height above vertex 0's plane {Vector3.Dot(n, c - v[0])}");
+        Assert.True(Vector3.Distance(c, v[k]) < r - 1e-4f);
+        Assert.True(ReferenceToi.Polygon(c, new Vector3(0, 0, -0.1f), r, saddle, out var hit));
+        Assert.Equal(ReferenceFeature.Resting, hit.Feature);
+        Assert.Equal(0f, hit.Time);
+    }
+
     private static readonly CylSphere Cyl = new(new Vector3(0, 0, 0), 0.5f, 2f);
 
     [Fact]
