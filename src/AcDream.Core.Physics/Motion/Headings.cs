@@ -7,9 +7,10 @@ namespace AcDream.Core.Physics.Motion;
 /// <summary>
 /// Retail's compass headings: degrees in [0, 360), 0 facing +Y, 90 facing +X (clockwise seen from above; a
 /// TurnRight increases it). The arithmetic follows the decompile in double (retail's x87 code), with its float
-/// stores; the trigonometry is <see cref="PortableMath"/>'s, the same bits on every machine.
+/// stores; the trigonometry is portable (the same bits on every machine). A server uses them for
+/// <see cref="MoveToParameters.DesiredHeading"/> and to read where a creature faces.
 /// </summary>
-internal static class Headings
+public static class Headings
 {
     // The decompile's degree/radian factors (acclient.c:357667 set_vector_heading, 467050 Position::heading).
     private const double DegreesPerRadian = 57.29577951308232;
@@ -19,7 +20,8 @@ internal static class Headings
     private static double OfDirection(double x, double y) =>
         (450.0 - PortableMath.Atan2(y, x) * DegreesPerRadian) % 360.0;
 
-    /// <summary>Frame::get_heading: the heading the frame's +Y axis points at.</summary>
+    /// <summary>Frame::get_heading: the heading the frame's +Y axis points at, compass degrees in [0, 360).</summary>
+    /// <param name="frame">The frame (a position's orientation).</param>
     public static float Of(in Frame frame)
     {
         var forward = frame.LocalToGlobalVec(Vector3.UnitY);
@@ -30,6 +32,8 @@ internal static class Headings
     /// Position::heading (acclient.c:467050): the heading from <paramref name="from"/> towards <paramref name="to"/>
     /// (across landblocks), ignoring height; 0 when they are closer than EPSILON horizontally (normalize_check_small).
     /// </summary>
+    /// <param name="from">Where from.</param>
+    /// <param name="to">Where to.</param>
     public static float Towards(in Position from, in Position to)
     {
         var d = from.GetOffset(to);
@@ -45,6 +49,7 @@ internal static class Headings
     /// world Z to face <paramref name="degrees"/>. Retail also keeps the frame's pitch (asin of the forward vector's
     /// z); a creature's motion turns it only about Z, so its pitch is 0 and the result is a pure yaw.
     /// </summary>
+    /// <param name="degrees">The compass heading, degrees.</param>
     public static Quaternion Facing(float degrees)
     {
         double radians = degrees * RadiansPerDegree;
@@ -66,7 +71,7 @@ internal static class Headings
     /// direction, in [0, 360): x − y, zero within EPSILON, wrapped up by 360 when negative, and measured the other
     /// way (360 − d) for any motion but TurnRight.
     /// </summary>
-    public static double Diff(float x, float y, uint motion)
+    internal static double Diff(float x, float y, uint motion)
     {
         const double e = PhysicsConstants.Epsilon;
         double d = (double)x - y;
@@ -84,7 +89,7 @@ internal static class Headings
     /// in <paramref name="motion"/>'s direction, comparing the short way round (a TurnRight has passed when x &gt; y,
     /// any other turn when x ≤ y).
     /// </summary>
-    public static bool Greater(float x, float y, uint motion)
+    internal static bool Greater(float x, float y, uint motion)
     {
         bool lessOrEqual = Math.Abs((double)x - y) <= 180.0 ? x <= y : y <= x;
         return motion == MotionCommand.TurnRight ? !lessOrEqual : lessOrEqual;
@@ -95,7 +100,7 @@ internal static class Headings
     /// at the positions: the horizontal-and-vertical reach between their surfaces, negative when they overlap. When one
     /// stands above the other (a vertical gap) and they overlap horizontally, retail returns the vertical gap.
     /// </summary>
-    public static float CylinderDistance(float r1, float h1, in Position p1, float r2, float h2, in Position p2)
+    internal static float CylinderDistance(float r1, float h1, in Position p1, float r2, float h2, in Position p2)
     {
         var o = p1.GetOffset(p2);
         float reach = (float)(Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z) - ((double)r1 + r2));
@@ -107,7 +112,7 @@ internal static class Headings
     }
 
     /// <summary>Position::distance: the distance between the positions' origins (across landblocks).</summary>
-    public static float Distance(in Position a, in Position b)
+    internal static float Distance(in Position a, in Position b)
     {
         var o = a.GetOffset(b);
         return (float)Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z);

@@ -651,12 +651,12 @@ public static class SceneLoader
                     // Retail's MoveToManager::MoveToPosition with retail's MovementParameters, the distance and the
                     // walk/run threshold optionally named.
                     var target = o.Vec3("moveTo");
-                    var parameters = MoveToParameters.Default with
-                    {
-                        DistanceToObject = o.Float("distanceToObject", 0.6f),
-                        WalkRunThreshold = o.Float("walkRunThreshold", 15f),
-                    };
-                    Checked(path, () => parameters.Check("moveTo"));
+                    float distance = o.Float("distanceToObject", 0.6f), threshold = o.Float("walkRunThreshold", 15f);
+                    if (!(distance >= 0f && distance <= 1000f))
+                        throw new SceneFormatException(o.Child("distanceToObject"), $"must be 0 to 1000 m, got {distance}.");
+                    if (!(threshold >= 0f && threshold <= 1000f))
+                        throw new SceneFormatException(o.Child("walkRunThreshold"), $"must be 0 to 1000 m, got {threshold}.");
+                    var parameters = MoveToParameters.Default with { DistanceToObject = distance, WalkRunThreshold = threshold };
                     command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters);
                     break;
                 }
