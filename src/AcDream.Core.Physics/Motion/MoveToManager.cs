@@ -53,6 +53,8 @@ internal sealed class MoveToManager
     public float PreviousHeading, PreviousDistance, OriginalDistance;
     public double PreviousDistanceTime, OriginalDistanceTime;
     public int FailProgressCount;
+    /// <summary>When the current run of failed progress checks began (the give-up rule's clock).</summary>
+    public double FailingSince;
     public uint SoughtObjectId, TopLevelObjectId;
     public float SoughtObjectRadius, SoughtObjectHeight;
     public uint CurrentCommand, AuxCommand;
@@ -522,8 +524,12 @@ internal sealed class MoveToManager
         {
             if (!MotionsPending())
             {
-                FailProgressCount++;
-                if (ProgressRule == MoveToProgressRule.GiveUp)
+                if (FailProgressCount++ == 0)
+                    FailingSince = Now;
+                // The give-up rule (not the 2013 client's, which only counts): the checks have kept failing for a
+                // further whole window (no progress for more than 2 s in all), not a passing dip such as a creature
+                // turning about to move away.
+                if (ProgressRule == MoveToProgressRule.GiveUp && Now - FailingSince > ProgressWindow)
                     CancelMoveTo(MoveToError.CantGetThere);
             }
             return;

@@ -60,8 +60,10 @@ public enum MoveToKind
 public enum MoveToProgressRule
 {
     /// <summary>
-    /// The move ends with <see cref="MoveToError.CantGetThere"/> at the first failed progress check of a move (a server's
-    /// rule: the 2013 client only counts the failures, see <see cref="CountOnly"/>). The default.
+    /// The move ends with <see cref="MoveToError.CantGetThere"/> once its progress checks have kept failing for a further
+    /// progress window (1 s) after the first failure, so no progress for more than 2 s in all; a passing dip (a creature
+    /// turning about to move away) does not end it. A server's rule: the 2013 client only counts the failures, see
+    /// <see cref="CountOnly"/>. The default.
     /// </summary>
     GiveUp,
     /// <summary>

@@ -46,6 +46,7 @@ internal static class ManagerParityCheck
         double maxDifference = 0;
         string? firstFailure = null;
         uint sought = 0;
+        int countingFrom = -1; // the frame our progress checks first failed (progress-clock departure)
         for (int f = 0; f < file.Frames.Length; f++)
         {
             ref readonly var frame = ref file.Frames[f];
@@ -101,7 +102,9 @@ internal static class ManagerParityCheck
             if (VectorMath.SameBits(position, expected.Origin)) identical++;
             // ACE's first turn quantum counts a failed check that retail's order never shows (the turn begun at the call is
             // still pending when the first handler runs); part of turn-starts-at-call, the count is not compared there.
-            string? flag = Difference(expected, state, motion, endedNow, compareFails: !(shift != 0 && e == 1));
+            if (countingFrom < 0 && motion.MoveToFailProgressCount > 0)
+                countingFrom = f;
+            string? flag = Difference(expected, state, motion, endedNow, compareFails: !(shift != 0 && e == 1) && countingFrom < 0);
             if (flag is not null) mismatches++;
             if (firstFailure is null)
             {
@@ -119,8 +122,8 @@ internal static class ManagerParityCheck
         string? verdict = null;
         if (gaveUpAt >= 0)
             verdict = string.Format(c,
-                "departs at frame {0}: ours gives up (CantGetThere: CheckProgressMade failed, less than 0.25 m/s over more than 1 s, acclient.c:344832; ObjectMotion.MoveToProgressRule GiveUp), then {1} transitions in the {2} frames left; ACE keeps the move for ever (it counts failed checks and never acts on them, MoveToManager.cs:456-460: fail count {3} at its last frame); frames 0-{4}: {5}",
-                gaveUpAt, transitionsAfter, file.Frames.Length - gaveUpAt - 1, aceFails, gaveUpAt - 1, counts);
+                "departs at frame {0}: ours gives up (CantGetThere: CheckProgressMade, less than 0.25 m/s over more than 1 s, acclient.c:344832, failing from frame {6} for a further second: ObjectMotion.MoveToProgressRule GiveUp), then {1} transitions in the {2} frames left; ACE keeps the move for ever (it counts failed checks and never acts on them, MoveToManager.cs:456-460: fail count {3} at its last frame); frames 0-{4}: {5}; fail counts compared until frame {6} (departure progress-clock: ACE's clock adds 1/30 s in double from 1000 s, 31 frames to pass 1 s; ours adds the float quantum, 30)",
+                gaveUpAt, transitionsAfter, file.Frames.Length - gaveUpAt - 1, aceFails, gaveUpAt - 1, counts, countingFrom);
         else if (shift != 0 && firstFailure is null)
             verdict = $"ok (within {ParityCheck.Tolerance.ToString("0e0", c)} m, headings within {HeadingTolerance.ToString("0e0", c)} deg) under {TurnStartsAtCall}; {counts}";
         string? note = shift != 0 ? TurnStartsAtCall

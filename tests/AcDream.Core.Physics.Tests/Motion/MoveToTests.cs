@@ -136,13 +136,14 @@ public class MoveToTests
     [Fact]
     public void AStuckCreature_GivesUpWithinRetailsTime_ThenCostsNoTransitions()
     {
-        // Running at the door's slab from 12 m away (9.5 m/s): blocked after about 1.2 s. CheckProgressMade judges
-        // windows longer than 1 s, so the first window wholly spent against the slab fails at most two windows
-        // (2 × 31 quanta) after the stop: the move ends with CantGetThere well before 3.5 s (105 frames).
+        // Running at the door's slab from 12 m away (9.5 m/s): blocked after about 1.2 s (frame 35). CheckProgressMade
+        // judges windows longer than 1 s, so the first window wholly spent against the slab fails at most two windows
+        // (2 × 31 quanta) after the stop; the give-up rule waits one more window of failing checks: the move ends with
+        // CantGetThere by frame 35 + 3 × 31 = 128.
         var rig = Rig(Bench.DoorScene.Create().World, 100f, 88f);
         rig.Motion.MoveToPosition(TestGeometry.At(100f, 104f, 0f), MoveToParameters.Default with { WalkRunThreshold = 1f }, rig.Mover, rig.State, rig.Body);
         int ended = RunUntilEnded(rig, 300);
-        Assert.InRange(ended, 40, 105);
+        Assert.InRange(ended, 40, 128);
         Assert.Equal(MoveToError.CantGetThere, rig.Motion.MoveToResult);
         var at = rig.Origin;
         int transitions = 0;
@@ -254,5 +255,46 @@ public class MoveToTests
             rig.Frames(40);
         }
         Assert.Equal(0, Allocations.PerRound(Round, Round));
+    }
+
+    [Fact]
+    public void TurnToObject_FacesTheObjectOnceItsPositionArrives()
+    {
+        // Heading from (60, 60) to (70, 60): east, 90 (Position::heading); TurnRight, then snapped to it.
+        var rig = Rig();
+        rig.Motion.TurnToObject(0x50000002, MoveToParameters.Default, rig.Mover, rig.State, rig.Body);
+        Assert.Equal(MoveToStatus.WaitingForTarget, rig.Motion.MoveToStatus);
+        rig.Motion.UpdateMoveToTarget(0x50000002, TestGeometry.At(70f, 60f, 0f), rig.Mover, rig.State, rig.Body);
+        Assert.Equal(MotionCommand.TurnRight, rig.Motion.MoveToCommand);
+        RunUntilEnded(rig, 100);
+        Assert.Equal(MoveToError.None, rig.Motion.MoveToResult);
+        Assert.Equal(Headings.Facing(90f), rig.State.Position.Frame.Orientation);
+    }
+
+    [Fact]
+    public void MoveAway_WalksUntilTheMinDistance()
+    {
+        // MoveAway alone: WalkForward while closer than MinDistance (get_command), aiming 180° from the point
+        // (get_desired_heading), so it turns about while walking; done once the cylinder distance is at least 5 m.
+        var rig = Rig();
+        var p = MoveToParameters.Default with { Flags = (MoveToFlags.RetailDefault & ~MoveToFlags.MoveTowards) | MoveToFlags.MoveAway, MinDistance = 5f };
+        rig.Motion.MoveToPosition(TestGeometry.At(60f, 62f, 0f), p, rig.Mover, rig.State, rig.Body);
+        int ended = RunUntilEnded(rig, 600);
+        Assert.True(ended > 0);
+        Assert.True(rig.Motion.MoveToResult == MoveToError.None, $"{rig.Motion.MoveToResult} at frame {ended}, at {rig.Origin}");
+        float centre = Vector2.Distance(new Vector2(rig.Origin.X, rig.Origin.Y), new Vector2(60f, 62f));
+        Assert.True(centre >= 5f + 0.48f - 1e-3f, $"centre distance {centre}");
+    }
+
+    [Fact]
+    public void UseFinalHeading_TurnsToItAfterArriving()
+    {
+        var rig = Rig();
+        var p = MoveToParameters.Default with { Flags = MoveToFlags.RetailDefault | MoveToFlags.UseFinalHeading, DesiredHeading = 180f };
+        rig.Motion.MoveToPosition(TestGeometry.At(60f, 66f, 0f), p, rig.Mover, rig.State, rig.Body);
+        Assert.Equal(2, rig.Motion.MoveToNodeCount); // the move (facing it already) and the final turn
+        RunUntilEnded(rig, 400);
+        Assert.Equal(MoveToError.None, rig.Motion.MoveToResult);
+        Assert.Equal(Headings.Facing(180f), rig.State.Position.Frame.Orientation);
     }
 }

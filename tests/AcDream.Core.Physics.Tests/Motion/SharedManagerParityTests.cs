@@ -35,7 +35,7 @@ public class SharedManagerParityTests
         Assert.True(report.Passed, report.ToString());
         string line = report.ToString();
         Assert.DoesNotContain(": ok", line);
-        Assert.Contains("departs at frame 89", line);
+        Assert.Contains("departs at frame 119", line);
         Assert.Contains("then 0 transitions", line);
         Assert.Equal(report.Frames, report.WithinTolerance);
     }

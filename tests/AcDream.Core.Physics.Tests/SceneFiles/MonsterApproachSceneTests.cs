@@ -34,11 +34,11 @@ public class MonsterApproachSceneTests
     public void AHeadOnCreature_GivesUpWithinRetailsTime_AndStands(string name)
     {
         // It stops against the obstacle by frame 100 (a turn of up to 90° at 90°/s, then about 20 m at 9.5 m/s);
-        // CheckProgressMade judges windows longer than 1 s (31 quanta), so within two windows of the stop the move
-        // has given up: Ready by frame 100 + 62.
+        // CheckProgressMade judges windows longer than 1 s (31 quanta): a check fails within two windows of the stop,
+        // and the give-up rule waits one more window of failing checks: Ready by frame 100 + 3 × 31.
         var frames = Mover(name).Frames;
         Assert.Equal(At(name, 100), At(name, 239));
-        Assert.Equal(MotionCommand.Ready, frames[162].Motion!.Value.Interpreted.ForwardCommand);
+        Assert.Equal(MotionCommand.Ready, frames[193].Motion!.Value.Interpreted.ForwardCommand);
         Assert.True(At(name, 239).Y < 96f); // it never got past
     }
 }
