@@ -297,4 +297,21 @@ public class MoveToTests
         Assert.Equal(MoveToError.None, rig.Motion.MoveToResult);
         Assert.Equal(Headings.Facing(180f), rig.State.Position.Frame.Orientation);
     }
+
+    [Fact]
+    public void ACreatureInTheAir_WaitsForContact_ThenMoves()
+    {
+        // UseTime runs only with contact (transient_state & 1); landing restarts the head node (HitGround). A fall of
+        // 10 m takes √(2·10/9.8) = 1.43 s (43 quanta); the move is worked once it stands.
+        var rig = Rig();
+        rig.State = MoverState.Airborne(TestGeometry.At(60f, 60f, 10f));
+        rig.Motion.MoveToPosition(TestGeometry.At(60f, 70f, 0f), MoveToParameters.Default, rig.Mover, rig.State, rig.Body);
+        rig.Frames(38);
+        Assert.False(rig.State.Contact);
+        Assert.Equal(60f, rig.Origin.Y); // no root motion off the ground
+        int ended = RunUntilEnded(rig, 300);
+        Assert.True(ended > 0);
+        Assert.Equal(MoveToError.None, rig.Motion.MoveToResult);
+        Assert.InRange(rig.Origin.Y, 70f - 1.08f, 70f);
+    }
 }
