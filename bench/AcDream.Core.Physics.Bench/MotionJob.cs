@@ -67,6 +67,29 @@ public static class MotionJob
         var runKey = new MotionParameters(1f, HoldKey.Run);
         var stop = new MotionParameters();
 
+        // Creatures with retail's MoveToManager (issue 22): one chasing a point 60 m ahead (run, aim check, progress check
+        // every quantum; CountOnly so that the unchanging state each call repeats never ends the move), one whose
+        // manager is idle (its last move ended). Each call steps from the same state.
+        var chaser = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(200, 200)) { MoveToProgressRule = MoveToProgressRule.CountOnly };
+        chaser.SetCylinder(0.48f, 1.835f);
+        var chaseBody = BodyState.Creature();
+        chaser.Place(mover, start, ref chaseBody);
+        var far = start.Position;
+        far.Frame.Origin += new Vector3(0f, 60f, 0f);
+        chaser.MoveToPosition(far, MoveToParameters.Default, mover, start, chaseBody);
+        var chaseState = start;
+        for (int i = 0; i < 15; i++) // through the turn node's check into the run
+        {
+            var r = engine.Step(mover, chaseState, chaseBody, chaser, Frame);
+            chaseState = r.Next;
+            chaseBody = r.Body;
+        }
+        var idle = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(200, 200));
+        var idleBody = BodyState.Creature();
+        idle.Place(mover, start, ref idleBody);
+        idle.TurnToHeading(MoveToParameters.Default, mover, start, idleBody); // already facing 0: ends at once
+        var stand = start;
+
         var rows = new (string Name, Action Call)[]
         {
             ("Resolve: one frame of the run (0.317 m)", () => engine.Resolve(mover, start, target)),
@@ -82,6 +105,8 @@ public static class MotionJob
                 engine.Step(mover, s, b, toggler, Frame);
             }),
             ("Step (desired velocity, not retail): the same run", () => engine.Step(mover, start, walker, Frame, run)),
+            ("Step with motion: a creature with a MoveTo active (run, aim, progress check)", () => engine.Step(mover, chaseState, chaseBody, chaser, Frame)),
+            ("Step with motion: a creature standing, its MoveTo idle", () => engine.Step(mover, stand, idleBody, idle, Frame)),
         };
         var measured = RowTimer.Measure(Array.ConvertAll(rows, r => r.Call), warmUp: 20_000, reps: 2000, rounds: 9);
         var md = new StringBuilder();

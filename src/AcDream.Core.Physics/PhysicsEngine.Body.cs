@@ -173,6 +173,8 @@ public sealed partial class PhysicsEngine
     {
         b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
         QuantumCore(mover, ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
+        // After SetPositionInternal: MovementManager::UseTime → MoveToManager::UseTime (Motion/ObjectMotion.MoveTo.cs).
+        motion?.UseMoveTo(mover, ref s, b, quantum);
         // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
         motion?.HandleMovement();
     }

@@ -170,13 +170,13 @@ internal static class MotionParityCheck
     private static bool Close(Vector3 a, Vector3 b) =>
         MathF.Abs(a.X - b.X) <= SequenceVectorTolerance && MathF.Abs(a.Y - b.Y) <= SequenceVectorTolerance && MathF.Abs(a.Z - b.Z) <= SequenceVectorTolerance;
 
-    private static bool Same(float a, float b) => BitConverter.SingleToInt32Bits(a) == BitConverter.SingleToInt32Bits(b);
+    internal static bool Same(float a, float b) => BitConverter.SingleToInt32Bits(a) == BitConverter.SingleToInt32Bits(b);
 
     private static string Describe(in InterpretedMotionState s) => string.Format(CultureInfo.InvariantCulture,
         "style 0x{0:X8} forward 0x{1:X8}×{2:R} sidestep 0x{3:X8}×{4:R} turn 0x{5:X8}×{6:R}",
         s.Style, s.ForwardCommand, s.ForwardSpeed, s.SideStepCommand, s.SideStepSpeed, s.TurnCommand, s.TurnSpeed);
 
-    private static double Distance(Vector3 a, Vector3 b)
+    internal static double Distance(Vector3 a, Vector3 b)
     {
         double dx = (double)a.X - b.X, dy = (double)a.Y - b.Y, dz = (double)a.Z - b.Z;
         return Math.Sqrt(dx * dx + dy * dy + dz * dz);

@@ -32,27 +32,8 @@ internal static class MotionParityReader
     public static MotionParityFile Read(JsonElement root, string name, string directory)
     {
         var o = new JsonObj(root, string.Empty);
-        string tableFile = o.String("table");
-        if (tableFile.Contains('/') || tableFile.Contains('\\') || tableFile.Contains(".."))
-            throw new SceneFormatException("table", $"must be a file name beside the file, got \"{tableFile}\".");
-        string tablePath = Path.Combine(directory, tableFile);
-        if (!File.Exists(tablePath))
-            throw new SceneFormatException("table", $"{tableFile} does not exist beside the file.");
-        if (new FileInfo(tablePath).Length > MaxTableBytes)
-            throw new SceneFormatException("table", $"{tableFile} is larger than {MaxTableBytes} bytes.");
-        MotionTable table;
-        try
-        {
-            table = MotionTableReader.Parse(File.ReadAllText(tablePath));
-        }
-        catch (SceneFormatException ex)
-        {
-            throw new SceneFormatException($"table ({tableFile}) {ex.JsonPath}".TrimEnd(), ex.Detail, ex);
-        }
-
-        double rate = JsonRead.Double(o.Req("rateHz"), "rateHz");
-        if (!(rate >= 1.0 && rate <= 1000.0))
-            throw new SceneFormatException("rateHz", $"must be 1 to 1000, got {rate}.");
+        var table = ReadTable(o, directory);
+        double rate = ReadRate(o);
 
         var m = o.Obj("mover");
         string setup = m.String("setup");
@@ -60,7 +41,7 @@ internal static class MotionParityReader
             throw new SceneFormatException(m.Child("setup"), $"only the retail player setup is known, got \"{setup}\".");
         var state = (PhysicsState)JsonRead.Int(m.Req("stateBits"), m.Child("stateBits"));
         if (m.Id("motionTable") != table.Id)
-            throw new SceneFormatException(m.Child("motionTable"), $"names 0x{m.Id("motionTable"):X8}, but {tableFile} is 0x{table.Id:X8}.");
+            throw new SceneFormatException(m.Child("motionTable"), $"names 0x{m.Id("motionTable"):X8}, but {o.String("table")} is 0x{table.Id:X8}.");
         MoverDescription mover;
         try
         {
@@ -107,6 +88,36 @@ internal static class MotionParityReader
         for (int i = 0; i < frames.Length; i++)
             frames[i] = ReadFrame(items[i].Value, items[i].Path);
         return new MotionParityFile(name, world, mover, table, skills, start, body, 1.0 / rate, frames);
+    }
+
+    /// <summary>The motion table file a parity file names beside it ("table"): a plain file name, at most <see cref="MaxTableBytes"/>.</summary>
+    internal static MotionTable ReadTable(JsonObj o, string directory)
+    {
+        string tableFile = o.String("table");
+        if (tableFile.Contains('/') || tableFile.Contains('\\') || tableFile.Contains(".."))
+            throw new SceneFormatException("table", $"must be a file name beside the file, got \"{tableFile}\".");
+        string tablePath = Path.Combine(directory, tableFile);
+        if (!File.Exists(tablePath))
+            throw new SceneFormatException("table", $"{tableFile} does not exist beside the file.");
+        if (new FileInfo(tablePath).Length > MaxTableBytes)
+            throw new SceneFormatException("table", $"{tableFile} is larger than {MaxTableBytes} bytes.");
+        try
+        {
+            return MotionTableReader.Parse(File.ReadAllText(tablePath));
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException($"table ({tableFile}) {ex.JsonPath}".TrimEnd(), ex.Detail, ex);
+        }
+    }
+
+    /// <summary>The file's frame rate ("rateHz"), 1 to 1000.</summary>
+    internal static double ReadRate(JsonObj o)
+    {
+        double rate = JsonRead.Double(o.Req("rateHz"), "rateHz");
+        if (!(rate >= 1.0 && rate <= 1000.0))
+            throw new SceneFormatException("rateHz", $"must be 1 to 1000, got {rate}.");
+        return rate;
     }
 
     private static MotionParityFrame ReadFrame(JsonElement e, string path)
@@ -251,4 +262,7 @@ internal static class MotionParityReader
         """;
 
     private static PhysicsWorld World() => SceneLoader.Load(WorldScene, "ace-motion world").World;
+
+    /// <summary>The same world for the manager parity files (ManagerParityReader); the tree they list stands far from the compared paths.</summary>
+    internal static PhysicsWorld SharedWorld() => World();
 }

@@ -28,6 +28,8 @@ public static class ParityCheck
     public static ParityReport CheckFile(string path, Action<int, int>? progress = null)
     {
         var set = ParityReader.ReadFile(path);
+        if (set.ManagerFile)
+            return ManagerParityCheck.Check(set);
         return set.Motion is not null ? MotionParityCheck.Check(set.Motion) : Check(set, progress);
     }
 

@@ -65,10 +65,19 @@ internal static class ParityReader
         var o = new JsonObj(root, string.Empty);
         string format = o.String("format");
         int version = o.Int("version", -1);
-        if (format is not (AceFormat or RealCellsFormat or MotionParityReader.Format))
-            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}, {MotionParityReader.Format}).");
+        if (format is not (AceFormat or RealCellsFormat or MotionParityReader.Format or ManagerParityReader.Format))
+            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}, {MotionParityReader.Format}, {ManagerParityReader.Format}).");
         if (version != 1)
             throw new SceneFormatException("version", $"unsupported {format} version {version} (this reader reads version 1).");
+        if (format == ManagerParityReader.Format)
+        {
+            if (root.TryGetProperty("frames", out var mframes) && mframes.ValueKind == JsonValueKind.Array && mframes.GetArrayLength() > MaxFramesPerFile)
+                throw new SceneFormatException("frames", $"the file holds more than {MaxFramesPerFile} frames.");
+            // The position managers' files are listed, not read (ManagerParityCheck prints why).
+            var managers = ManagerParityReader.IsPositionManagerFile(name) ? null : ManagerParityReader.Read(root, name, directory);
+            return new ParitySet(name, managers?.World ?? MotionParityReader.SharedWorld(), [], RequireBitIdentical: false, Managers: managers,
+                ManagerFile: true);
+        }
         if (format == MotionParityReader.Format)
         {
             // One run: the frame cap applies to the file's own frame list.

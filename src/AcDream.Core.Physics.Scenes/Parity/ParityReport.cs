@@ -49,10 +49,18 @@ public sealed class ParityReport
     /// <summary>The file meets its threshold.</summary>
     public bool Passed => FirstFailure is null;
 
+    /// <summary>
+    /// A line that replaces the counts for a file not compared as a whole (a named departure from the reference, or
+    /// another engineer's file): it says why, and never says ok. Null for a compared file.
+    /// </summary>
+    internal string? Verdict { get; init; }
+
     /// <summary>One line: the file, pass or fail, the counts, and the first failure.</summary>
     public override string ToString()
     {
         var c = CultureInfo.InvariantCulture;
+        if (Verdict is not null)
+            return Passed ? $"{File}: {Verdict}" : $"{File}: FAIL {Verdict}; first: {FirstFailure}";
         double percent = Frames == 0 ? 0 : 100.0 * WithinTolerance / Frames;
         string need = RequireBitIdentical ? "bit-identical" : $"within {ParityCheck.Tolerance.ToString("0e0", c)} m";
         string line = string.Format(c,

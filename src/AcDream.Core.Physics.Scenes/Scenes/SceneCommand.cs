@@ -15,6 +15,8 @@ internal enum SceneCommandKind
     SetHoldKey,
     /// <summary><see cref="ObjectMotion.ChargeJump"/> then <see cref="ObjectMotion.Jump"/>.</summary>
     Jump,
+    /// <summary><see cref="ObjectMotion.MoveToPosition"/> (retail's MoveToManager; a server's creature chasing a point).</summary>
+    MoveTo,
 }
 
 /// <summary>
@@ -29,5 +31,7 @@ internal enum SceneCommandKind
 /// <param name="Extent">The jump's extent, 0..1 (Jump).</param>
 /// <param name="Stamina">The owner has the stamina (Jump).</param>
 /// <param name="Path">Its JSON path, for error messages.</param>
+/// <param name="Target">The point a MoveTo goes to (landblock-local to the mover's landblock).</param>
+/// <param name="MoveTo">The MoveTo's parameters (retail's defaults unless the command names them).</param>
 internal readonly record struct SceneCommand(int Frame, SceneCommandKind Kind, uint Motion, float Speed, HoldKey HoldKey, float Extent,
-    bool Stamina, string Path);
+    bool Stamina, string Path, System.Numerics.Vector3 Target = default, MoveToParameters MoveTo = default);

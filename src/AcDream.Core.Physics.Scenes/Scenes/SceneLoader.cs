@@ -582,7 +582,7 @@ public static class SceneLoader
             return (steps, new SceneMotion(table, skills, [.. commands]));
         }
 
-        private static readonly string[] CommandKinds = ["do", "stop", "stopCompletely", "holdKey", "jump"];
+        private static readonly string[] CommandKinds = ["do", "stop", "stopCompletely", "holdKey", "jump", "moveTo"];
 
         private static SceneCommand ReadCommand(JsonElement e, string path, int frames, double dt, MotionTable table)
         {
@@ -613,13 +613,17 @@ public static class SceneLoader
                     kind = k;
                 }
             if (kind is null)
-                throw new SceneFormatException(path, "a command needs one of \"do\", \"stop\" (a motion), \"stopCompletely\": true, \"holdKey\" or \"jump\" (an extent).");
+                throw new SceneFormatException(path, "a command needs one of \"do\", \"stop\" (a motion), \"stopCompletely\": true, \"holdKey\", \"jump\" (an extent) or \"moveTo\" (a point).");
             if (kind is not ("do" or "stop"))
                 foreach (string field in new[] { "speed", "hold" })
                     if (o.Has(field))
                         throw new SceneFormatException(o.Child(field), $"only \"do\" and \"stop\" take \"{field}\".");
             if (kind != "jump" && o.Has("stamina"))
                 throw new SceneFormatException(o.Child("stamina"), "only \"jump\" takes \"stamina\".");
+            if (kind != "moveTo")
+                foreach (string field in new[] { "distanceToObject", "walkRunThreshold" })
+                    if (o.Has(field))
+                        throw new SceneFormatException(o.Child(field), $"only \"moveTo\" takes \"{field}\".");
             SceneCommand command;
             switch (kind)
             {
@@ -642,6 +646,20 @@ public static class SceneLoader
                 case "holdKey":
                     command = new SceneCommand(frame, SceneCommandKind.SetHoldKey, 0, 1f, ReadHoldKey(o.Req(kind), o.Child(kind)), 0f, false, path);
                     break;
+                case "moveTo":
+                {
+                    // Retail's MoveToManager::MoveToPosition with retail's MovementParameters, the distance and the
+                    // walk/run threshold optionally named.
+                    var target = o.Vec3("moveTo");
+                    float distance = o.Float("distanceToObject", 0.6f), threshold = o.Float("walkRunThreshold", 15f);
+                    if (!(distance >= 0f && distance <= 1000f))
+                        throw new SceneFormatException(o.Child("distanceToObject"), $"must be 0 to 1000 m, got {distance}.");
+                    if (!(threshold >= 0f && threshold <= 1000f))
+                        throw new SceneFormatException(o.Child("walkRunThreshold"), $"must be 0 to 1000 m, got {threshold}.");
+                    var parameters = MoveToParameters.Default with { DistanceToObject = distance, WalkRunThreshold = threshold };
+                    command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters);
+                    break;
+                }
                 default:
                 {
                     float extent = o.Float("jump");

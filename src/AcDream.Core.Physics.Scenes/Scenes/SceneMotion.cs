@@ -31,6 +31,15 @@ internal sealed class SceneMotion
     {
         var motion = new ObjectMotion(Table, Skills);
         motion.Place(mover, state, ref body);
+        // The MoveTo distances' cylinder: the mover's spheres' widest radius and highest top (the retail player's
+        // setup says 0.48 and 1.835; its spheres reach 1.83).
+        float radius = 0f, height = 0f;
+        foreach (var s in mover.Spheres)
+        {
+            radius = MathF.Max(radius, s.Radius);
+            height = MathF.Max(height, s.Center.Z + s.Radius);
+        }
+        motion.SetCylinder(radius, height);
         return new Cursor(this, motion);
     }
 
@@ -79,6 +88,14 @@ internal sealed class SceneMotion
                 case SceneCommandKind.SetHoldKey:
                     Motion.SetHoldKey(c.HoldKey, mover, ref state, ref body);
                     break;
+                case SceneCommandKind.MoveTo:
+                {
+                    uint cell = LandDefs.LandCellAt(state.Position.CellId >> 16, c.Target);
+                    if (cell == 0)
+                        throw new ArgumentException($"moveTo: {c.Target} is outside the mover's landblock (0..192 m on X and Y).", "moveTo");
+                    Motion.MoveToPosition(new Position(cell, c.Target), c.MoveTo, mover, state, body);
+                    break;
+                }
                 case SceneCommandKind.Jump:
                     // A player's jump: charge_jump on the key press, jump on its release (MotionRig does the same).
                     if (Motion.ChargeJump(mover, state, body) == MotionError.None)

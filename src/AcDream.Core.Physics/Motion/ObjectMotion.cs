@@ -13,7 +13,7 @@ namespace AcDream.Core.Physics.Motion;
 /// moves the body by it. A command that leaves the ground (a jump) changes the caller's mover and body state
 /// through its ref arguments. One instance per object; not thread-safe; no allocation once warm.
 /// </summary>
-public sealed class ObjectMotion
+public sealed partial class ObjectMotion
 {
     private readonly Sequence _sequence = new();
     private readonly MotionTableManager _manager;
@@ -229,6 +229,8 @@ public sealed class ObjectMotion
         _interp.Body.Orientation = orientation;
         _interp.Body.Contact = contact;
         _interp.Body.Velocity = velocity;
+        if (!_interp.Body.OnWalkable && onWalkable)
+            _landed = true; // MovementManager::HitGround also tells the MoveToManager (ObjectMotion.MoveTo.cs)
         _interp.SetOnWalkable(onWalkable);
         return _interp.Body.Velocity;
     }

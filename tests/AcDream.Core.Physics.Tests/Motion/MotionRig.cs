@@ -8,14 +8,19 @@ namespace AcDream.Core.Physics.Tests.Motion;
 /// <summary>A retail player with the synthetic humanoid table standing on flat ground at (60, 60, 0), stepped at 30 Hz.</summary>
 internal sealed class MotionRig
 {
-    public readonly PhysicsEngine Engine = new(TestGeometry.FlatWorld());
+    public readonly PhysicsEngine Engine;
     public readonly MoverDescription Mover = MoverDescription.Player(stepDownHeight: 0.04f);
     public readonly ObjectMotion Motion;
-    public MoverState State = MoverState.OnFloor(TestGeometry.At(60f, 60f, 0f), 0f);
+    public MoverState State;
     public BodyState Body = BodyState.Creature();
 
-    public MotionRig(int runSkill = 200, int jumpSkill = 200)
+    public MotionRig(int runSkill = 200, int jumpSkill = 200) : this(TestGeometry.FlatWorld(), 60f, 60f, runSkill, jumpSkill) { }
+
+    /// <summary>The same player in <paramref name="world"/>, standing at (x, y, 0).</summary>
+    public MotionRig(PhysicsWorld world, float x, float y, int runSkill = 200, int jumpSkill = 200)
     {
+        Engine = new PhysicsEngine(world);
+        State = MoverState.OnFloor(TestGeometry.At(x, y, 0f), 0f);
         Motion = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(runSkill, jumpSkill));
         Motion.Place(Mover, State, ref Body);
     }

@@ -1,0 +1,222 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Numerics;
+using System.Text.Json;
+using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Scenes;
+
+namespace AcDream.Core.Physics.Parity;
+
+/// <summary>A MoveTo call a manager parity file makes before a frame's time passes.</summary>
+internal readonly record struct ManagerCall(MoveToKind Kind, Position Target, MoveToParameters Parameters, uint ObjectId);
+
+/// <summary>One frame of a manager parity file: the calls, the target update delivered, and ACE's state after it.</summary>
+internal readonly record struct ManagerFrame(
+    ManagerCall[] Calls,
+    Position? TargetUpdate,
+    Vector3 Origin,
+    uint Cell,
+    float Heading,
+    bool Contact,
+    bool Walkable,
+    uint ForwardCommand,
+    float ForwardSpeed,
+    uint TurnCommand,
+    float TurnSpeed,
+    MoveToKind Kind,
+    uint Command,
+    uint AuxCommand,
+    int FailProgressCount,
+    string? Completed);
+
+/// <summary>A manager parity file read (format "ace-manager-parity"): the motion world and table, the mover's start, the frames.</summary>
+internal sealed record ManagerParityFile(
+    string Name,
+    string Description,
+    PhysicsWorld World,
+    MoverDescription Mover,
+    MotionTable Table,
+    RetailSkills Skills,
+    MoverState Start,
+    double FrameSeconds,
+    ManagerFrame[] Frames);
+
+/// <summary>
+/// Reads an "ace-manager-parity" file (ACE's MoveToManager, StickyManager and InterpolationManager recorded quantum by
+/// quantum on the ace-motion world and table; described in the reference data's README). The MoveTo calls are read from
+/// the frames' recorded ACE calls; a MoveToObject's target updates from the recorded TargetInfo (a new lastUpdateTime).
+/// Files of the position managers (sticky, interpolate) are not read here. Errors name the JSON path. Load-time only.
+/// </summary>
+internal static class ManagerParityReader
+{
+    public const string Format = "ace-manager-parity";
+
+    /// <summary>The position managers' files, which this check does not compare (PositionManager work).</summary>
+    public static bool IsPositionManagerFile(string name) =>
+        name.StartsWith("sticky", StringComparison.Ordinal) || name.StartsWith("interpolate", StringComparison.Ordinal);
+
+    public static ManagerParityFile Read(JsonElement root, string name, string directory)
+    {
+        var o = new JsonObj(root, string.Empty);
+        var table = MotionParityReader.ReadTable(o, directory);
+        double rate = MotionParityReader.ReadRate(o);
+        var m = o.Obj("mover");
+        if (!m.String("setup").StartsWith("retail player", StringComparison.Ordinal))
+            throw new SceneFormatException(m.Child("setup"), "only the retail player setup is known.");
+        if (m.Id("motionTable") != table.Id)
+            throw new SceneFormatException(m.Child("motionTable"), $"names 0x{m.Id("motionTable"):X8}, but the table file is 0x{table.Id:X8}.");
+        RetailSkills skills;
+        try
+        {
+            skills = new RetailSkills(m.Int("runSkill", -1), 0, 0f);
+        }
+        catch (ArgumentException ex)
+        {
+            throw SceneFormatException.Wrap("mover.runSkill", ex);
+        }
+        // The retail player (its spheres, step heights 0.6 and 0.04), Gravity as the README's mover.
+        var mover = MoverDescription.Player().With(physicsState: PhysicsState.Gravity | PhysicsState.EdgeSlide);
+        var s = o.Obj("start");
+        uint cell = s.Id("cell");
+        var origin = s.Vec3("origin");
+        var orientation = JsonRead.Rotation(s.Req("orientation"), s.Child("orientation"));
+        var world = MotionParityReader.SharedWorld();
+        if (world.Cells.Get(cell) is null || LandDefs.LandCellAt(0xA9B4, origin) != cell)
+            throw new SceneFormatException(s.Child("cell"), $"0x{cell:X8} is not the landblock 0xA9B4 cell of {origin}.");
+        var start = MoverState.OnFloor(new Position(cell, new Frame(origin, orientation)), 0f);
+
+        var items = o.Array("frames");
+        if (items.Count == 0 || items.Count > SceneLoader.MaxFramesPerMover)
+            throw new SceneFormatException("frames", $"needs 1 to {SceneLoader.MaxFramesPerMover} frames, got {items.Count}.");
+        var frames = new ManagerFrame[items.Count];
+        double lastUpdate = double.NaN;
+        var previousOrigin = origin;
+        for (int i = 0; i < frames.Length; i++)
+        {
+            frames[i] = ReadFrame(items[i].Value, items[i].Path, previousOrigin, ref lastUpdate);
+            previousOrigin = frames[i].Origin;
+        }
+        return new ManagerParityFile(name, o.String("description", string.Empty) ?? string.Empty, world, mover, table, skills, start, 1.0 / rate, frames);
+    }
+
+    private static ManagerFrame ReadFrame(JsonElement e, string path, Vector3 before, ref double lastUpdate)
+    {
+        var f = new JsonObj(e, path);
+        var calls = new List<ManagerCall>();
+        string? completed = null;
+        foreach (var (value, at) in f.Array("commands"))
+        {
+            string text = JsonRead.String(value, at);
+            if (text.StartsWith("WeenieObject.OnMoveComplete(", StringComparison.Ordinal))
+                completed = text["WeenieObject.OnMoveComplete(".Length..].TrimEnd(')');
+            else if (text.StartsWith("PhysicsObj.", StringComparison.Ordinal))
+                calls.Add(ParseCall(text, at, before));
+        }
+        Position? update = null;
+        if (f.Opt("targetInfo") is { ValueKind: JsonValueKind.Object } ti)
+        {
+            var t = new JsonObj(ti, f.Child("targetInfo"));
+            double time = JsonRead.Double(t.Req("lastUpdateTime"), t.Child("lastUpdateTime"));
+            if (!(time == lastUpdate))
+            {
+                lastUpdate = time;
+                var p = t.Obj("targetPosition");
+                update = new Position(p.Id("cell"), p.Vec3("origin"));
+            }
+        }
+        var i = f.Obj("interpreted");
+        var mt = f.Opt("moveTo") is { ValueKind: JsonValueKind.Object } mte ? new JsonObj(mte, f.Child("moveTo")) : (JsonObj?)null;
+        var kind = MoveToKind.Invalid;
+        uint command = 0, aux = 0;
+        int fails = 0;
+        if (mt is { } mv)
+        {
+            string type = mv.String("movementType");
+            kind = Enum.TryParse<MoveToKind>(type, out var k) ? k
+                : throw new SceneFormatException(mv.Child("movementType"), $"unknown movement type \"{type}\".");
+            command = mv.Id("currentCommand");
+            aux = mv.Id("auxCommand");
+            fails = mv.Int("failProgressCount", 0);
+        }
+        return new ManagerFrame([.. calls], update, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
+            f.Bool("onWalkable", false), i.Id("forwardCommand"), i.Float("forwardSpeed"), i.Id("turnCommand"), i.Float("turnSpeed"), kind, command, aux,
+            fails, completed);
+    }
+
+    // The ACE calls as the recording logs them:
+    //   PhysicsObj.MoveToPosition((70, 75, 0), MovementParameters{CanRun, DistanceToObject 0.6, WalkRunThreshold 1, UseSpheres True, Speed 1}) -> ...
+    //   PhysicsObj.TurnToHeading(DesiredHeading 135) -> ...
+    //   PhysicsObj.MoveToObject(0x50000002, DistanceToObject 0.6, CanRun) -> ...
+    // A position given to 4 decimals ("20 m ahead of the start of this call") is rebuilt from the recorded origin before the call.
+    private static ManagerCall ParseCall(string text, string path, Vector3 before)
+    {
+        var c = CultureInfo.InvariantCulture;
+        if (text.StartsWith("PhysicsObj.MoveToPosition((", StringComparison.Ordinal))
+        {
+            int close = text.IndexOf(')');
+            var xyz = text["PhysicsObj.MoveToPosition((".Length..close].Split(',', StringSplitOptions.TrimEntries);
+            if (xyz.Length != 3 || !float.TryParse(xyz[0], NumberStyles.Float, c, out float x) || !float.TryParse(xyz[1], NumberStyles.Float, c, out float y)
+                || !float.TryParse(xyz[2], NumberStyles.Float, c, out float z))
+                throw new SceneFormatException(path, $"unreadable position in \"{text}\".");
+            var target = new Vector3(x, y, z);
+            // Rounded in the log: the README's "20 m ahead" is the origin before the call + 20 m along +Y.
+            var ahead = new Vector3(before.X, before.Y + 20f, 0f);
+            if (Vector3.Distance(ahead, target) < 1e-3f)
+                target = ahead;
+            var p = Parameters(Between(text, "MovementParameters{", "}", path), path);
+            return new ManagerCall(MoveToKind.MoveToPosition, new Position(LandDefs.LandCellAt(0xA9B4, target), target), p, 0);
+        }
+        if (text.StartsWith("PhysicsObj.TurnToHeading(DesiredHeading ", StringComparison.Ordinal))
+        {
+            string h = Between(text, "DesiredHeading ", ")", path);
+            if (!float.TryParse(h, NumberStyles.Float, c, out float heading))
+                throw new SceneFormatException(path, $"unreadable heading in \"{text}\".");
+            return new ManagerCall(MoveToKind.TurnToHeading, default, MoveToParameters.Default with { DesiredHeading = heading }, 0);
+        }
+        if (text.StartsWith("PhysicsObj.MoveToObject(", StringComparison.Ordinal))
+        {
+            string args = Between(text, "PhysicsObj.MoveToObject(", ")", path);
+            int comma = args.IndexOf(',');
+            uint id = comma > 2 && uint.TryParse(args[2..comma], NumberStyles.AllowHexSpecifier, c, out uint v) ? v
+                : throw new SceneFormatException(path, $"unreadable object id in \"{text}\".");
+            return new ManagerCall(MoveToKind.MoveToObject, default, Parameters(args[(comma + 1)..], path), id);
+        }
+        throw new SceneFormatException(path, $"unknown call \"{text}\" (known: PhysicsObj.MoveToPosition, TurnToHeading, MoveToObject).");
+    }
+
+    /// <summary>ACE's default walk/run threshold (MovementParameters.cs:49-50; retail's is 15 m): what ACE used where a call does not name one.</summary>
+    public const float AceDefaultWalkRunThreshold = 1f;
+
+    // "CanRun, DistanceToObject 0.6, WalkRunThreshold 1, UseSpheres True, Speed 1": retail's defaults with these values,
+    // and ACE's own threshold default where the call names none (as ACE ran it).
+    private static MoveToParameters Parameters(string list, string path)
+    {
+        var p = MoveToParameters.Default with { WalkRunThreshold = AceDefaultWalkRunThreshold };
+        foreach (string item in list.Split(',', StringSplitOptions.TrimEntries | StringSplitOptions.RemoveEmptyEntries))
+        {
+            int space = item.IndexOf(' ');
+            string key = space < 0 ? item : item[..space], value = space < 0 ? "" : item[(space + 1)..];
+            float number = float.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out float n) ? n : float.NaN;
+            p = key switch
+            {
+                "CanRun" => p with { Flags = p.Flags | MoveToFlags.CanRun },
+                "DistanceToObject" when float.IsFinite(number) => p with { DistanceToObject = number },
+                "WalkRunThreshold" when float.IsFinite(number) => p with { WalkRunThreshold = number },
+                "Speed" when float.IsFinite(number) => p with { Speed = number },
+                "UseSpheres" => value == "True" ? p with { Flags = p.Flags | MoveToFlags.UseSpheres } : p with { Flags = p.Flags & ~MoveToFlags.UseSpheres },
+                _ => throw new SceneFormatException(path, $"unknown movement parameter \"{item}\"."),
+            };
+        }
+        return p;
+    }
+
+    private static string Between(string text, string open, string close, string path)
+    {
+        int a = text.IndexOf(open, StringComparison.Ordinal);
+        int b = a < 0 ? -1 : text.IndexOf(close, a + open.Length, StringComparison.Ordinal);
+        return b < 0 ? throw new SceneFormatException(path, $"unreadable call \"{text}\".") : text[(a + open.Length)..b];
+    }
+}

@@ -1,0 +1,160 @@
+using System;
+using AcDream.Core.Physics.Validation;
+
+namespace AcDream.Core.Physics.Motion;
+
+/// <summary>Retail's MovementParameters bits (the bitfield MovementParameters::get_command and the MoveToManager read).</summary>
+[Flags]
+public enum MoveToFlags : uint
+{
+    /// <summary>None.</summary>
+    None = 0,
+    /// <summary>May walk (without it a mover that can run always runs).</summary>
+    CanWalk = 0x1,
+    /// <summary>May run: runs when farther than the walk/run threshold beyond the distance to the object.</summary>
+    CanRun = 0x2,
+    /// <summary>May sidestep (carried; retail's MoveToManager does not read it).</summary>
+    CanSidestep = 0x4,
+    /// <summary>May walk backwards (carried; not read by the MoveToManager).</summary>
+    CanWalkBackwards = 0x8,
+    /// <summary>Always run (get_command's first test).</summary>
+    CanCharge = 0x10,
+    /// <summary>Carried; not read by the MoveToManager.</summary>
+    FailWalk = 0x20,
+    /// <summary>Turn to <see cref="MoveToParameters.DesiredHeading"/> after arriving (relative to the target's heading for an object).</summary>
+    UseFinalHeading = 0x40,
+    /// <summary>Stick to the object on arrival (retail hands it to the PositionManager's StickTo; see <see cref="ObjectMotion.StickOnArrival"/>).</summary>
+    Sticky = 0x80,
+    /// <summary>Move away until <see cref="MoveToParameters.MinDistance"/>.</summary>
+    MoveAway = 0x100,
+    /// <summary>Move towards until <see cref="MoveToParameters.DistanceToObject"/>.</summary>
+    MoveTowards = 0x200,
+    /// <summary>Measure the distance between the two cylinders (radius, height) instead of the origins.</summary>
+    UseSpheres = 0x400,
+    /// <summary>Carried to the motion commands.</summary>
+    SetHoldKey = 0x800,
+    /// <summary>Carried.</summary>
+    Autonomous = 0x1000,
+    /// <summary>Carried to the motion commands.</summary>
+    ModifyRawState = 0x2000,
+    /// <summary>Carried to the motion commands.</summary>
+    ModifyInterpretedState = 0x4000,
+    /// <summary>Carried.</summary>
+    CancelMoveTo = 0x8000,
+    /// <summary>TurnToHeading and TurnToObject stop the mover first.</summary>
+    StopCompletely = 0x10000,
+    /// <summary>Carried to the motion commands.</summary>
+    DisableJumpDuringLink = 0x20000,
+    /// <summary>
+    /// Retail's default bitfield (MovementParameters::MovementParameters, acclient.c:339436: 0x1EE0F): can walk, run,
+    /// sidestep and walk backwards; towards; spheres; set hold key; modify raw and interpreted state; cancel moveto;
+    /// stop completely. Not CanCharge (ACE's constructor sets it).
+    /// </summary>
+    RetailDefault = 0x1EE0F,
+}
+
+/// <summary>
+/// Retail's MovementParameters for a MoveTo or a turn (CMovementDefs, acclient.c:339436 for the defaults):
+/// <see cref="Default"/> is retail's constructor. Distances in metres, headings in compass degrees
+/// (0 facing +Y, 90 facing +X).
+/// </summary>
+public readonly record struct MoveToParameters
+{
+    /// <summary>Retail's defaults: <see cref="MoveToFlags.RetailDefault"/>, distance to object 0.6 m, min distance 0, fail distance float.MaxValue (none), speed 1, walk/run threshold 15 m, heading 0.</summary>
+    public static MoveToParameters Default => new();
+
+    /// <summary>Retail's defaults (see <see cref="Default"/>).</summary>
+    public MoveToParameters() { }
+
+    /// <summary>The bitfield.</summary>
+    public MoveToFlags Flags { get; init; } = MoveToFlags.RetailDefault;
+    /// <summary>distance_to_object: arrived when the distance is at most this (default 0.6 m, 0x3F19999A).</summary>
+    public float DistanceToObject { get; init; } = 0.6f;
+    /// <summary>min_distance: moving away ends when the distance is at least this (default 0).</summary>
+    public float MinDistance { get; init; }
+    /// <summary>fail_distance: the move fails (<see cref="MoveToError.YouChargedTooFar"/>) once the mover is farther than this from where it started (default float.MaxValue: never).</summary>
+    public float FailDistance { get; init; } = float.MaxValue;
+    /// <summary>desired_heading: the heading of a TurnToHeading, or the final heading with <see cref="MoveToFlags.UseFinalHeading"/>.</summary>
+    public float DesiredHeading { get; init; }
+    /// <summary>speed: the motion commands' speed (default 1).</summary>
+    public float Speed { get; init; } = 1f;
+    /// <summary>
+    /// walk_run_threshhold: with CanWalk and CanRun, the mover runs when the distance beyond <see cref="DistanceToObject"/>
+    /// is more than this. Retail's constructor sets 15 m (0x41700000, acclient.c:339436); ACE's sets 1 m.
+    /// </summary>
+    public float WalkRunThreshold { get; init; } = 15f;
+    /// <summary>hold_key_to_apply for the turn of a TurnToHeading (a move decides its own: Run or None).</summary>
+    public HoldKey HoldKey { get; init; } = HoldKey.Invalid;
+
+    internal bool Has(MoveToFlags f) => (Flags & f) != 0;
+
+    /// <summary>Throws an <see cref="ArgumentException"/> naming the first field that is not usable; nothing is changed.</summary>
+    internal void Check(string name)
+    {
+        if ((Flags & ~(MoveToFlags)0x3FFFF) != 0)
+            throw new ArgumentException($"{name}.Flags: unknown bits 0x{(uint)Flags & ~0x3FFFFu:X}.", name);
+        NonNegativeOrMax(DistanceToObject, name, ".DistanceToObject");
+        NonNegativeOrMax(MinDistance, name, ".MinDistance");
+        if (!(FailDistance >= 0f) || float.IsNaN(FailDistance))
+            throw new ArgumentException($"{name}.FailDistance: must be 0 or more (float.MaxValue for none), got {FailDistance}.", name);
+        if (!(DesiredHeading >= 0f && DesiredHeading < 360f))
+            throw new ArgumentException($"{name}.DesiredHeading: must be a heading in [0, 360) degrees, got {DesiredHeading}.", name);
+        if (!(Speed > 0f && Speed <= 100f))
+            throw new ArgumentException($"{name}.Speed: must be more than 0 and at most 100, got {Speed}.", name);
+        NonNegativeOrMax(WalkRunThreshold, name, ".WalkRunThreshold");
+        if (HoldKey is not (HoldKey.Invalid or HoldKey.None or HoldKey.Run))
+            throw new ArgumentException($"{name}.HoldKey: must be Invalid, None or Run, got {HoldKey}.", name);
+    }
+
+    private static void NonNegativeOrMax(float v, string name, string field)
+    {
+        if (!(v >= 0f) || float.IsNaN(v) || v > InputLimits.MaxCoordinate)
+            throw new ArgumentException($"{name}{field}: must be finite, 0 to {InputLimits.MaxCoordinate}, got {v}.", name);
+    }
+
+    /// <summary>
+    /// MovementParameters::get_command (acclient.c:346174): the command for the distance (WalkForward towards,
+    /// WalkForward away, WalkBackwards, or 0 when there), whether it moves away, and the hold key (Run with
+    /// CanCharge, or CanRun when it cannot walk or is more than the walk/run threshold beyond the distance to the object).
+    /// </summary>
+    internal void GetCommand(float distance, out uint command, out HoldKey key, out bool movingAway)
+    {
+        command = 0;
+        movingAway = false;
+        bool away = Has(MoveToFlags.MoveAway), towards = Has(MoveToFlags.MoveTowards);
+        if (away && towards)
+        {
+            // towards_and_away (acclient.c:346152).
+            if (distance > DistanceToObject)
+                command = MotionCommand.WalkForward;
+            else if (distance - MinDistance < PhysicsConstants.Epsilon)
+            {
+                command = MotionCommand.WalkBackwards;
+                movingAway = true;
+            }
+        }
+        else if (away)
+        {
+            if (distance < MinDistance)
+            {
+                command = MotionCommand.WalkForward;
+                movingAway = true;
+            }
+        }
+        else if (distance > DistanceToObject)
+        {
+            command = MotionCommand.WalkForward;
+        }
+        bool run = Has(MoveToFlags.CanCharge)
+            || Has(MoveToFlags.CanRun) && (!Has(MoveToFlags.CanWalk) || distance - DistanceToObject > WalkRunThreshold);
+        key = run ? HoldKey.Run : HoldKey.None;
+    }
+
+    /// <summary>MovementParameters::get_desired_heading (acclient.c:346223): 180 when the command faces away from where it goes, else 0.</summary>
+    internal static float DesiredHeadingOffset(uint command, bool movingAway) => command switch
+    {
+        MotionCommand.RunForward or MotionCommand.WalkForward => movingAway ? 180f : 0f,
+        MotionCommand.WalkBackwards => movingAway ? 0f : 180f,
+        _ => 0f,
+    };
+}

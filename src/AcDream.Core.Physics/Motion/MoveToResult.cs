@@ -1,0 +1,74 @@
+namespace AcDream.Core.Physics.Motion;
+
+/// <summary>
+/// How a MoveTo or turn ended: retail's WeenieError codes the MoveToManager passes to CancelMoveTo and
+/// CleanUpAndCallWeenie (acclient-src PORTAL/canim/CMoveToManager.c), plus <see cref="CantGetThere"/> for the give-up
+/// rule (<see cref="ObjectMotion.MoveToProgressRule"/>).
+/// </summary>
+public enum MoveToError : uint
+{
+    /// <summary>Arrived (or turned) as asked.</summary>
+    None = 0x00,
+    /// <summary>NoPhysicsObject (8): retail's answer when the manager has no object; not produced here (a MoveTo always has one).</summary>
+    NoPhysicsObject = 0x08,
+    /// <summary>ActionCancelled (0x36): cancelled by the caller, or replaced by a new MoveTo (PerformMovement).</summary>
+    ActionCancelled = 0x36,
+    /// <summary>ObjectGone (0x37): the sought object went away after the move had started (HandleUpdateTarget).</summary>
+    ObjectGone = 0x37,
+    /// <summary>NoObject (0x38): the sought object was not there when the move started (HandleUpdateTarget).</summary>
+    NoObject = 0x38,
+    /// <summary>
+    /// CantGetThere (0x39, "Unable to move to object!"): the move made too little progress (CheckProgressMade failed:
+    /// less than 0.25 m/s over more than 1 s) and <see cref="ObjectMotion.MoveToProgressRule"/> gives up.
+    /// </summary>
+    CantGetThere = 0x39,
+    /// <summary>YouChargedTooFar (0x3D): farther than the fail distance from where the move started.</summary>
+    YouChargedTooFar = 0x3D,
+    /// <summary>NoMtableData (0x43): the motion table has no walk, run or turn for the command the move gave (a motion command's error ends the move with its code).</summary>
+    NoMotionTableData = 0x43,
+}
+
+/// <summary>Where a MoveTo stands.</summary>
+public enum MoveToStatus
+{
+    /// <summary>None was started since the object was created (or since the last result was taken).</summary>
+    Idle,
+    /// <summary>Waiting for the first position of the sought object (MoveToObject / TurnToObject before the first target update).</summary>
+    WaitingForTarget,
+    /// <summary>Turning or moving.</summary>
+    Moving,
+    /// <summary>Ended: <see cref="ObjectMotion.MoveToResult"/> says how.</summary>
+    Ended,
+}
+
+/// <summary>Retail's MovementTypes for the MoveToManager.</summary>
+public enum MoveToKind
+{
+    /// <summary>No move.</summary>
+    Invalid = 0,
+    /// <summary>Move to an object whose positions arrive as target updates.</summary>
+    MoveToObject = 6,
+    /// <summary>Move to a position.</summary>
+    MoveToPosition = 7,
+    /// <summary>Turn to face an object.</summary>
+    TurnToObject = 8,
+    /// <summary>Turn to a heading.</summary>
+    TurnToHeading = 9,
+}
+
+/// <summary>What a MoveTo does when its progress check fails (see <see cref="ObjectMotion.MoveToProgressRule"/>).</summary>
+public enum MoveToProgressRule
+{
+    /// <summary>
+    /// The move ends with <see cref="MoveToError.CantGetThere"/> once its progress checks have kept failing for a further
+    /// progress window (1 s) after the first failure, so no progress for more than 2 s in all; a passing dip (a creature
+    /// turning about to move away) does not end it. A server's rule: the 2013 client only counts the failures, see
+    /// <see cref="CountOnly"/>. The default.
+    /// </summary>
+    GiveUp,
+    /// <summary>
+    /// The 2013 client's MoveToManager exactly: fail_progress_count grows by one per failed check (acclient.c:345659,
+    /// 345769) and nothing reads it; a blocked mover runs in place until its owner cancels the move.
+    /// </summary>
+    CountOnly,
+}

@@ -1,0 +1,53 @@
+using System.IO;
+using AcDream.Core.Physics.Parity;
+using AcDream.Core.Physics.Tests.Parity;
+
+namespace AcDream.Core.Physics.Tests.Motion;
+
+/// <summary>
+/// The shared ACE managers folder (shared/ace-managers) through the MoveToManager: the files that follow retail match
+/// frame by frame, the blocked move departs where ours gives up (and says so), and the position managers' files are
+/// listed as not compared — no line says ok for what was not compared. Compiled only when the folder exists.
+/// </summary>
+public class SharedManagerParityTests
+{
+    private static ParityReport Check(string file) => ParityCheck.CheckFile(Path.Combine(SharedFolders.Find("ace-managers")!, file));
+
+    [Theory]
+    [InlineData("moveto-position.json.gz")]
+    [InlineData("moveto-walk-run-threshold-retail15.json.gz")]
+    [InlineData("moveto-walk-run-threshold.json.gz")]
+    [InlineData("moveto-object.json.gz")]
+    [InlineData("turnto-heading.json.gz")]
+    public void TheRetailFollowingFiles_MatchEveryFrame(string file)
+    {
+        var report = Check(file);
+        Assert.True(report.Passed, report.ToString());
+        Assert.Equal(report.Frames, report.WithinTolerance);
+        Assert.Equal(0, report.FlagMismatches);
+        Assert.StartsWith($"{file}: ok", report.ToString());
+    }
+
+    [Fact]
+    public void TheBlockedMove_DepartsWhereOursGivesUp_AndSaysSo()
+    {
+        var report = Check("moveto-blocked.json.gz");
+        Assert.True(report.Passed, report.ToString());
+        string line = report.ToString();
+        Assert.DoesNotContain(": ok", line);
+        Assert.Contains("departs at frame 119", line);
+        Assert.Contains("then 0 transitions", line);
+        Assert.Equal(report.Frames, report.WithinTolerance);
+    }
+
+    [Theory]
+    [InlineData("sticky.json.gz")]
+    [InlineData("interpolate.json.gz")]
+    [InlineData("interpolate-applied-offset.json.gz")]
+    public void ThePositionManagersFiles_AreListedAsNotCompared(string file)
+    {
+        string line = Check(file).ToString();
+        Assert.Contains("not compared here", line);
+        Assert.DoesNotContain("ok", line);
+    }
+}
