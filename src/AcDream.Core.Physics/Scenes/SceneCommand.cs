@@ -15,6 +15,12 @@ internal enum SceneCommandKind
     SetHoldKey,
     /// <summary><see cref="ObjectMotion.ChargeJump"/> then <see cref="ObjectMotion.Jump"/>.</summary>
     Jump,
+    /// <summary><see cref="Managers.PositionManager.InterpolateTo"/>: a position a server reports for the mover.</summary>
+    InterpolateTo,
+    /// <summary><see cref="Managers.PositionManager.StickTo"/> an earlier mover of the scene, then its position each frame (UpdateTarget).</summary>
+    StickTo,
+    /// <summary><see cref="Managers.PositionManager.UnStick"/>.</summary>
+    UnStick,
 }
 
 /// <summary>
@@ -29,5 +35,10 @@ internal enum SceneCommandKind
 /// <param name="Extent">The jump's extent, 0..1 (Jump).</param>
 /// <param name="Stamina">The owner has the stamina (Jump).</param>
 /// <param name="Path">Its JSON path, for error messages.</param>
+/// <param name="Position">The reported position (InterpolateTo).</param>
+/// <param name="KeepHeading">Keep the mover's heading (InterpolateTo).</param>
+/// <param name="TargetMover">The index in the scene of the mover stuck to (StickTo).</param>
+/// <param name="Radius">The target's radius, m (StickTo).</param>
+/// <param name="Height">The target's height, m (StickTo).</param>
 internal readonly record struct SceneCommand(int Frame, SceneCommandKind Kind, uint Motion, float Speed, HoldKey HoldKey, float Extent,
-    bool Stamina, string Path);
+    bool Stamina, string Path, Position Position = default, bool KeepHeading = false, int TargetMover = -1, float Radius = 0f, float Height = 0f);
