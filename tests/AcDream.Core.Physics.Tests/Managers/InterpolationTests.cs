@@ -130,6 +130,22 @@ public class InterpolationTests
     }
 
     [Fact]
+    public void ANodeThatStopsProgressingWithin20cm_CountsAsReached_NoBlip()
+    {
+        // 0.15 m from the node (more than 0.05, so not reached) and not moving: the check of frame 10 fails the progress
+        // rule, but curr_distance < 0.2 completes the node as a success: the queue ends, nothing to blip.
+        var m = new InterpolationManager();
+        var view = Still(100f, 93.85f);
+        m.InterpolateTo(At(100f, 94f), false, view, out _);
+        var offset = Frame.Identity;
+        for (int frame = 1; frame <= 10; frame++)
+            m.AdjustOffset(ref offset, Q, view, sticky: false);
+        Assert.Equal(0, m.Count);
+        Assert.Equal(0, m.NodeFailCounter);
+        Assert.False(m.BlipTarget(out _));
+    }
+
+    [Fact]
     public void WhileSticky_TheProgressCheckAlwaysPasses()
     {
         var m = new InterpolationManager();

@@ -132,4 +132,22 @@ public class StickyTests
         rig.Frame();
         Assert.Equal(new Vector3(60f, 60f, 0f), rig.Origin);
     }
+
+    [Fact]
+    public void StickySteps_AllocateNothingOnceWarm()
+    {
+        var rig = new ManagerRig(60f, 60f);
+        int i = 0;
+        void Round()
+        {
+            for (int k = 0; k < 30; k++, i++)
+            {
+                if (k == 0)
+                    rig.Manager.StickTo(Target, 0.48f, 1.835f, rig.Mover);
+                rig.Manager.UpdateTarget(Target, ManagerRig.At(60f + (i % 40) * 0.05f, 61.6f));
+                rig.Frame();
+            }
+        }
+        Assert.Equal(0, Support.Allocations.PerRound(Round, Round));
+    }
 }
