@@ -177,6 +177,9 @@ public sealed partial class PhysicsEngine
         motion?.UseMoveTo(mover, ref s, b, quantum);
         // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
         motion?.HandleMovement();
+        // PositionManager::UseTime: the sticky timeout, and the interpolation's blip (SetPositionSimple).
+        if (motion is not null && motion.PositionManager.UseTime(quantum, out var blipTarget))
+            Blip(mover, ref s, ref b, blipTarget, motion.PositionManager);
     }
 
     private void QuantumCore(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
@@ -198,6 +201,7 @@ public sealed partial class PhysicsEngine
                 float scale = s.OnWalkable ? mover.Scale : 0f;
                 offset.Origin = new Vector3((float)(offset.Origin.X * (double)scale), (float)(offset.Origin.Y * (double)scale),
                     (float)(offset.Origin.Z * (double)scale));
+                motion.PositionManager.AdjustOffset(ref offset, quantum, mover, s); // interpolation, sticky, leash
                 frame = begin.Frame.Combine(offset);
                 BodyMotion.IntegrateInto(ref frame.Origin, ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
             }

@@ -17,6 +17,12 @@ internal enum SceneCommandKind
     Jump,
     /// <summary><see cref="ObjectMotion.MoveToPosition"/> (retail's MoveToManager; a server's creature chasing a point).</summary>
     MoveTo,
+    /// <summary><see cref="Managers.PositionManager.InterpolateTo"/>: a position a server reports for the mover.</summary>
+    InterpolateTo,
+    /// <summary><see cref="Managers.PositionManager.StickTo"/> an earlier mover of the scene, then its position each frame (UpdateTarget).</summary>
+    StickTo,
+    /// <summary><see cref="Managers.PositionManager.UnStick"/>.</summary>
+    UnStick,
 }
 
 /// <summary>
@@ -33,5 +39,11 @@ internal enum SceneCommandKind
 /// <param name="Path">Its JSON path, for error messages.</param>
 /// <param name="Target">The point a MoveTo goes to (landblock-local to the mover's landblock).</param>
 /// <param name="MoveTo">The MoveTo's parameters (retail's defaults unless the command names them).</param>
+/// <param name="Position">The reported position (InterpolateTo).</param>
+/// <param name="KeepHeading">Keep the mover's heading (InterpolateTo).</param>
+/// <param name="TargetMover">The index in the scene of the mover stuck to (StickTo).</param>
+/// <param name="Radius">The target's radius, m (StickTo).</param>
+/// <param name="Height">The target's height, m (StickTo).</param>
 internal readonly record struct SceneCommand(int Frame, SceneCommandKind Kind, uint Motion, float Speed, HoldKey HoldKey, float Extent,
-    bool Stamina, string Path, System.Numerics.Vector3 Target = default, MoveToParameters MoveTo = default);
+    bool Stamina, string Path, System.Numerics.Vector3 Target = default, MoveToParameters MoveTo = default, Position Position = default,
+    bool KeepHeading = false, int TargetMover = -1, float Radius = 0f, float Height = 0f);

@@ -103,7 +103,7 @@ public static class SceneLoader
             long totalFrames = 0;
             foreach (var (value, path) in o.Array("movers"))
             {
-                var mover = ReadMover(value, path);
+                var mover = ReadMover(value, path, movers);
                 if (!names.Add(mover.Name))
                     throw new SceneFormatException(path + ".name", $"mover name \"{mover.Name}\" is used twice.");
                 totalFrames += mover.FrameCount;
@@ -442,7 +442,7 @@ public static class SceneLoader
 
         // ---- movers ----
 
-        private SceneMover ReadMover(JsonElement e, string path)
+        private SceneMover ReadMover(JsonElement e, string path, List<SceneMover> earlier)
         {
             var o = new JsonObj(e, path);
             string name = o.String("name");
@@ -495,7 +495,7 @@ public static class SceneLoader
             if (o.Opt("steps") is { } st2)
                 steps = ReadSteps(st2, o.Child("steps"), itemStarts);
             else if (o.Has("commands"))
-                (steps, commands) = ReadCommands(o, itemStarts);
+                (steps, commands) = ReadCommands(o, itemStarts, start, id, earlier);
             else
                 motion = ReadMotion(o.Req("motion"), o.Child("motion"), itemStarts);
             if (o.Opt("body") is { } b)
@@ -512,9 +512,13 @@ public static class SceneLoader
         /// "burden" } with retail's formulas, defaults Run 200, Jump 200, burden 0; or "none"), "frames" and one of "hz" or
         /// "dt" (every frame's elapsed time), and "commands", each at a "frame" or a "time" (seconds, rounded to the
         /// nearest frame) with exactly one of "do", "stop" (a motion name or id, with "speed" and "hold"),
-        /// "stopCompletely": true, "holdKey" ("None" or "Run") or "jump" (an extent, with "stamina").
+        /// "stopCompletely": true, "holdKey" ("None" or "Run") or "jump" (an extent, with "stamina"); or for the position
+        /// managers "interpolateTo" ([x, y, z] landblock-local, with "landblock" (default the mover's) and "keepHeading"),
+        /// "rotation" (the reported orientation, default the identity)), "stickTo" (the name of an earlier mover, with "radius" and
+        /// "height") or "unstick": true.
         /// </summary>
-        private static (SceneStep[] Steps, SceneMotion Motion) ReadCommands(JsonObj o, List<int> itemStarts)
+        private static (SceneStep[] Steps, SceneMotion Motion) ReadCommands(JsonObj o, List<int> itemStarts, in MoverState start, uint id,
+            List<SceneMover> earlier)
         {
             MotionTable table;
             var te = o.Req("motionTable");
@@ -571,7 +575,7 @@ public static class SceneLoader
             {
                 if (commands.Count >= MaxFramesPerMover)
                     throw new SceneFormatException(p, $"a mover may give at most {MaxFramesPerMover} commands.");
-                var c = ReadCommand(value, p, frames, dt, table);
+                var c = ReadCommand(value, p, frames, dt, table, start, id, earlier);
                 if (commands.Count > 0 && c.Frame < commands[^1].Frame)
                     throw new SceneFormatException(p, $"commands must be in time order: frame {c.Frame} comes after frame {commands[^1].Frame}.");
                 commands.Add(c);
@@ -582,9 +586,10 @@ public static class SceneLoader
             return (steps, new SceneMotion(table, skills, [.. commands]));
         }
 
-        private static readonly string[] CommandKinds = ["do", "stop", "stopCompletely", "holdKey", "jump", "moveTo"];
+        private static readonly string[] CommandKinds = ["do", "stop", "stopCompletely", "holdKey", "jump", "moveTo", "interpolateTo", "stickTo", "unstick"];
 
-        private static SceneCommand ReadCommand(JsonElement e, string path, int frames, double dt, MotionTable table)
+        private static SceneCommand ReadCommand(JsonElement e, string path, int frames, double dt, MotionTable table, in MoverState start, uint id,
+            List<SceneMover> earlier)
         {
             var o = new JsonObj(e, path);
             if (o.Has("frame") == o.Has("time"))
@@ -613,17 +618,16 @@ public static class SceneLoader
                     kind = k;
                 }
             if (kind is null)
-                throw new SceneFormatException(path, "a command needs one of \"do\", \"stop\" (a motion), \"stopCompletely\": true, \"holdKey\", \"jump\" (an extent) or \"moveTo\" (a point).");
+                throw new SceneFormatException(path, "a command needs one of \"do\", \"stop\" (a motion), \"stopCompletely\": true, \"holdKey\", \"jump\" (an extent), \"moveTo\" (a point), \"interpolateTo\", \"stickTo\" or \"unstick\": true.");
             if (kind is not ("do" or "stop"))
                 foreach (string field in new[] { "speed", "hold" })
                     if (o.Has(field))
                         throw new SceneFormatException(o.Child(field), $"only \"do\" and \"stop\" take \"{field}\".");
             if (kind != "jump" && o.Has("stamina"))
                 throw new SceneFormatException(o.Child("stamina"), "only \"jump\" takes \"stamina\".");
-            if (kind != "moveTo")
-                foreach (string field in new[] { "distanceToObject", "walkRunThreshold" })
-                    if (o.Has(field))
-                        throw new SceneFormatException(o.Child(field), $"only \"moveTo\" takes \"{field}\".");
+            foreach (var (field, owner) in ManagerFields)
+                if (o.Has(field) && kind != owner)
+                    throw new SceneFormatException(o.Child(field), $"only \"{owner}\" takes \"{field}\".");
             SceneCommand command;
             switch (kind)
             {
@@ -660,6 +664,37 @@ public static class SceneLoader
                     command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters);
                     break;
                 }
+                case "interpolateTo":
+                {
+                    var origin = JsonRead.Vec3(o.Req(kind), o.Child(kind));
+                    uint block = o.Opt("landblock") is { } lb ? JsonRead.Id(lb, o.Child("landblock")) : start.Position.CellId >> 16;
+                    if (block > 0xFFFF || !LandDefs.IsValidLandblock(block))
+                        throw new SceneFormatException(o.Child("landblock"), $"0x{block:X} is not a landblock id in the retail world.");
+                    if (!(origin.X >= 0f && origin.X < PhysicsConstants.LandblockLength && origin.Y >= 0f && origin.Y < PhysicsConstants.LandblockLength))
+                        throw new SceneFormatException(o.Child(kind), $"x and y must be landblock-local, 0 to 192 (use \"landblock\" for another one), got {origin}.");
+                    var position = new Position(LandDefs.LandCellAt(block, origin), new Frame(origin, o.Rotation("rotation")));
+                    command = new SceneCommand(frame, SceneCommandKind.InterpolateTo, 0, 1f, HoldKey.Invalid, 0f, false, path, Position: position, KeepHeading: o.Bool("keepHeading", false));
+                    break;
+                }
+                case "stickTo":
+                {
+                    string name = JsonRead.String(o.Req(kind), o.Child(kind));
+                    int index = earlier.FindIndex(m => m.Name == name);
+                    if (index < 0)
+                        throw new SceneFormatException(o.Child(kind), $"\"{name}\" is not a mover given before this one (a mover sticks to an earlier mover, whose frames it follows).");
+                    if (earlier[index].Description.ObjectId == id)
+                        throw new SceneFormatException(o.Child(kind), $"\"{name}\" has this mover's id 0x{id:X8}: give the movers different \"id\"s.");
+                    float radius = o.Float("radius"), height = o.Float("height", 0f);
+                    if (!(radius >= 0f && radius <= 100f) || !(height >= 0f && height <= 100f))
+                        throw new SceneFormatException(o.Child("radius"), $"radius and height must be 0 to 100 m, got {radius} and {height}.");
+                    command = new SceneCommand(frame, SceneCommandKind.StickTo, 0, 1f, HoldKey.Invalid, 0f, false, path, TargetMover: index, Radius: radius, Height: height);
+                    break;
+                }
+                case "unstick":
+                    if (!JsonRead.Bool(o.Req(kind), o.Child(kind)))
+                        throw new SceneFormatException(o.Child(kind), "must be true (leave the field out for no command).");
+                    command = new SceneCommand(frame, SceneCommandKind.UnStick, 0, 1f, HoldKey.Invalid, 0f, false, path);
+                    break;
                 default:
                 {
                     float extent = o.Float("jump");
@@ -672,6 +707,9 @@ public static class SceneLoader
             o.End();
             return command;
         }
+
+        private static readonly (string Field, string Owner)[] ManagerFields =
+            [("distanceToObject", "moveTo"), ("walkRunThreshold", "moveTo"), ("landblock", "interpolateTo"), ("keepHeading", "interpolateTo"), ("rotation", "interpolateTo"), ("radius", "stickTo"), ("height", "stickTo")];
 
         private static HoldKey ReadHoldKey(JsonElement e, string path)
         {

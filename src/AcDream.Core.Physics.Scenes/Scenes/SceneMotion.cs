@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
@@ -27,7 +28,11 @@ internal sealed class SceneMotion
     public ReadOnlySpan<SceneCommand> Commands => _commands;
 
     /// <summary>A fresh motion layer placed at the mover's start (the body's velocity as the placement leaves it).</summary>
-    public Cursor Start(MoverDescription mover, in MoverState state, ref BodyState body)
+    /// <param name="mover">The mover.</param>
+    /// <param name="state">Its start.</param>
+    /// <param name="body">Its body.</param>
+    /// <param name="earlier">The movers run before this one (their start and frames): what a StickTo command follows.</param>
+    public Cursor Start(MoverDescription mover, in MoverState state, ref BodyState body, IReadOnlyList<(SceneMover Mover, IReadOnlyList<TrajectoryFrame> Frames)>? earlier = null)
     {
         var motion = new ObjectMotion(Table, Skills);
         motion.Place(mover, state, ref body);
@@ -40,13 +45,14 @@ internal sealed class SceneMotion
             height = MathF.Max(height, s.Center.Z + s.Radius);
         }
         motion.SetCylinder(radius, height);
-        return new Cursor(this, motion);
+        return new Cursor(this, motion, earlier ?? []);
     }
 
     /// <summary>One run of a motion mover: its motion layer and the next command to give.</summary>
-    internal sealed class Cursor(SceneMotion script, ObjectMotion motion)
+    internal sealed class Cursor(SceneMotion script, ObjectMotion motion, IReadOnlyList<(SceneMover Mover, IReadOnlyList<TrajectoryFrame> Frames)> earlier)
     {
         private int _next;
+        private int _followed = -1;
 
         public ObjectMotion Motion { get; } = motion;
 
@@ -69,6 +75,14 @@ internal sealed class SceneMotion
                 {
                     throw SceneFormatException.Wrap(c.Path, ex);
                 }
+            }
+            // The followed mover's position where this frame starts (its start, or its frame before), as a target
+            // manager's update reports it; ignored by the sticky manager once the stick has ended.
+            if (_followed >= 0)
+            {
+                var (target, frames) = earlier[_followed];
+                var at = frame == 0 ? target.Start.Position : new Position(frames[frame - 1].Cell, frames[frame - 1].Position);
+                Motion.PositionManager.UpdateTarget(target.Description.ObjectId, at);
             }
         }
 
@@ -100,6 +114,19 @@ internal sealed class SceneMotion
                     // A player's jump: charge_jump on the key press, jump on its release (MotionRig does the same).
                     if (Motion.ChargeJump(mover, state, body) == MotionError.None)
                         Motion.Jump(c.Extent, c.Stamina, mover, ref state, ref body);
+                    break;
+                case SceneCommandKind.InterpolateTo:
+                    Motion.PositionManager.InterpolateTo(c.Position, c.KeepHeading, mover, ref state);
+                    break;
+                case SceneCommandKind.StickTo:
+                    if (c.TargetMover >= earlier.Count)
+                        throw new SceneFormatException(c.Path, $"sticks to mover #{c.TargetMover}, whose frames this run was not given (run the scene's movers in order).");
+                    Motion.PositionManager.StickTo(earlier[c.TargetMover].Mover.Description.ObjectId, c.Radius, c.Height, mover);
+                    _followed = c.TargetMover;
+                    break;
+                case SceneCommandKind.UnStick:
+                    Motion.PositionManager.UnStick();
+                    _followed = -1;
                     break;
             }
         }

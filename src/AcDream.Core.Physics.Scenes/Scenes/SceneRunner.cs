@@ -42,7 +42,7 @@ public static class SceneRunner
             var frames = new List<TrajectoryFrame>(mover.FrameCount);
             var state = mover.Start;
             var body = mover.StartBody;
-            var motion = mover.Commands?.Start(mover.Description, state, ref body);
+            var motion = mover.Commands?.Start(mover.Description, state, ref body, Earlier(scene, movers));
             for (int f = 0; f < mover.FrameCount; f++)
             {
                 SceneStep? step = null;
@@ -72,6 +72,17 @@ public static class SceneRunner
             movers.Add(new MoverTrajectory(mover.Name, frames));
         }
         return new Trajectory(scene.Name, scene.Sha256, LibraryVersion, movers);
+    }
+
+    /// <summary>The movers run so far with their frames (what a StickTo command follows).</summary>
+    internal static List<(SceneMover, IReadOnlyList<TrajectoryFrame>)> Earlier(Scene scene, IReadOnlyList<MoverTrajectory> done, int count = -1)
+    {
+        if (count < 0)
+            count = done.Count;
+        var list = new List<(SceneMover, IReadOnlyList<TrajectoryFrame>)>(count);
+        for (int i = 0; i < count; i++)
+            list.Add((scene.Movers[i], done[i].Frames));
+        return list;
     }
 
     /// <summary>

@@ -105,7 +105,8 @@ public static class TrajectoryReplay
                 return Fail(new ReplayDifference(mover.Name, -1, "frames.count", Str(recorded.Frames.Count), Str(mover.FrameCount)), compared, tolerance, notes);
             var state = mover.Start;
             var body = mover.StartBody;
-            var motion = mover.Commands?.Start(mover.Description, state, ref body);
+            // A StickTo follows the earlier movers' recorded frames (compared equal before this mover is replayed).
+            var motion = mover.Commands?.Start(mover.Description, state, ref body, SceneRunner.Earlier(scene, trajectory.Movers, m));
             for (int f = 0; f < recorded.Frames.Count; f++)
             {
                 var expected = recorded.Frames[f];

@@ -34,7 +34,14 @@ public sealed partial class ObjectMotion
         _interp = new MotionInterpreter(_manager, skills);
         _interp.Body = new MotionInterpreter.BodyView { Gravity = true, Orientation = Quaternion.Identity };
         _interp.EnterDefaultState();
+        PositionManager = new Managers.PositionManager(_interp);
     }
+
+    /// <summary>
+    /// The object's position managers (retail CPhysicsObj's PositionManager): smoothing towards reported positions,
+    /// sticking to a target, the leash. The body step runs them each quantum.
+    /// </summary>
+    public Managers.PositionManager PositionManager { get; }
 
     /// <summary>The motion table.</summary>
     public MotionTable Table { get; }

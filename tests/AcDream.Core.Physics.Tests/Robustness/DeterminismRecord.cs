@@ -117,7 +117,9 @@ internal static class DeterminismRecord
         void Add(uint x) { for (int i = 0; i < 4; i++) { h ^= (byte)(x >> (8 * i)); h *= 1099511628211UL; } }
         var state = mover.Start;
         var body = mover.StartBody;
-        var motion = mover.Commands?.Start(mover.Description, state, ref body);
+        // A mover that sticks to an earlier one follows that mover's frames (the scene run so far).
+        var earlier = moverIndex == 0 ? null : SceneRunner.Earlier(scene, SceneRunner.Run(scene).Movers, moverIndex);
+        var motion = mover.Commands?.Start(mover.Description, state, ref body, earlier);
         for (int f = 0; f < mover.FrameCount; f++)
         {
             MoveResult r;
