@@ -172,9 +172,13 @@ public sealed partial class PhysicsEngine
         Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
     {
         b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
-        QuantumCore(mover, ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
+        bool prevOnWalkable = s.OnWalkable;
+        int accepted = _acceptedTransitions;
+        QuantumCore(QuantumMover(mover), ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
         // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
         motion?.HandleMovement();
+        if (_missile is not null)
+            AfterMissileQuantum(_acceptedTransitions != accepted, prevOnWalkable, s);
     }
 
     private void QuantumCore(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
