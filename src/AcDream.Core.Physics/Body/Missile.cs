@@ -57,16 +57,36 @@ public sealed class Missile
     /// <param name="velocity">The launch velocity, landblock axes, m/s.</param>
     /// <exception cref="ArgumentException">A description without the Missile state, a bad frame or a non-finite or too large velocity, named in the message.</exception>
     public Missile(MoverDescription description, Position start, Vector3 velocity)
+        : this(description, start, BodyState.Object(velocity), "missile.velocity")
+    {
+    }
+
+    /// <summary>
+    /// A missile launched with a whole <see cref="BodyState"/>: its velocity, spin (a spinning projectile), friction
+    /// and elasticity. A missile has no motion interpreter (<see cref="BodyState.MotionInterpreter"/> is cleared).
+    /// </summary>
+    /// <param name="description">What the missile is; its <see cref="MoverDescription.PhysicsState"/> must include Missile.</param>
+    /// <param name="start">The launch position (cell and landblock-local frame); checked against the world at the first step.</param>
+    /// <param name="body">The launch velocity, spin, friction and elasticity.</param>
+    /// <exception cref="ArgumentException">A description without the Missile state, a bad frame or a bad body field, named in the message.</exception>
+    public Missile(MoverDescription description, Position start, BodyState body)
+        : this(description, start, body, "missile.body.velocity")
+    {
+    }
+
+    private Missile(MoverDescription description, Position start, BodyState body, string velocityField)
     {
         ArgumentNullException.ThrowIfNull(description);
         if ((description.PhysicsState & PhysicsState.Missile) == 0)
             throw new ArgumentException($"missile.description.physicsState: must include Missile (0x40), got {description.PhysicsState}.", nameof(description));
         Guard.Pose(ref start.Frame, "missile.start");
-        BodyGuard.Velocity(velocity, "missile.velocity", nameof(velocity));
+        BodyGuard.Velocity(body.Velocity, velocityField, "velocity");
+        BodyGuard.Check(body, 0.0, Vector3.Zero, 0f);
         _flight = description;
         _spent = description.With(physicsState: description.PhysicsState & ~FlightBits);
         State = MoverState.Airborne(start);
-        Body = BodyState.Object(velocity);
+        body.MotionInterpreter = false;
+        Body = body;
     }
 
     /// <summary>

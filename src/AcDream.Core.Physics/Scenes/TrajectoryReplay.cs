@@ -106,6 +106,15 @@ public static class TrajectoryReplay
             var state = mover.Start;
             var body = mover.StartBody;
             var motion = mover.Commands?.Start(mover.Description, state, ref body);
+            Body.Missile? missile;
+            try
+            {
+                missile = SceneRunner.Launch(mover);
+            }
+            catch (SceneFormatException ex)
+            {
+                return Fail(new ReplayDifference(mover.Name, 0, "step", "a valid input", ex.Message), compared, tolerance, notes);
+            }
             for (int f = 0; f < recorded.Frames.Count; f++)
             {
                 var expected = recorded.Frames[f];
@@ -115,7 +124,7 @@ public static class TrajectoryReplay
                 TrajectoryFrame actual;
                 try
                 {
-                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body, motion, f);
+                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body, motion, f, missile);
                 }
                 catch (ArgumentException ex)
                 {
@@ -176,7 +185,10 @@ public static class TrajectoryReplay
             ?? (expected.Step is null ? null
                 : Vec("body.velocity", expected.Velocity, actual.Velocity)
                 ?? (expected.Quanta != actual.Quanta ? D("body.quanta", Str(expected.Quanta), Str(actual.Quanta)) : null))
-            ?? CompareMotion(expected.Motion, actual.Motion);
+            ?? CompareMotion(expected.Motion, actual.Motion)
+            ?? (expected.Hit != actual.Hit ? D("hit", HitText(expected.Hit), HitText(actual.Hit)) : null);
+
+        static string HitText(TrajectoryHit? h) => h is { } v ? $"{v.Kind} 0x{v.ObjectId:X8} in quantum {v.Quantum}" : "none";
 
         ReplayDifference? CompareMotion(TrajectoryMotion? e, TrajectoryMotion? a)
         {
