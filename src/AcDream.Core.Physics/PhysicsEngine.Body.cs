@@ -221,6 +221,8 @@ public sealed partial class PhysicsEngine
             s.Position.Frame.Orientation = frame.Orientation;
             return;
         }
+        if ((ps & PhysicsState.AlignPath) != 0)
+            frame.Orientation = AlignPath.Heading(d, frame.Orientation); // UpdateObjectInternal: a missile points along its path
 
         // get_object_info: a body moving away from its contact plane faster than EPSILON is not in contact (check_contact).
         var seeded = s;

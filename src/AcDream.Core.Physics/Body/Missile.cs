@@ -34,9 +34,9 @@ namespace AcDream.Core.Physics.Body;
 /// </list>
 /// <para>
 /// The hit's report is made whether or not the missile has <see cref="PhysicsState.ReportCollisions"/> (retail calls
-/// the weenie only with it, but clears the bits either way). AlignPath's turn of the missile towards its path
-/// (UpdateObjectInternal) is not applied: it turns the object, and a missile's sphere centred on its origin
-/// collides the same whichever way it points.
+/// the weenie only with it, but clears the bits either way). With <see cref="PhysicsState.AlignPath"/> (as servers
+/// launch missiles) each quantum turns the missile's frame to face along its path before the transition
+/// (UpdateObjectInternal, Frame::set_vector_heading), as for any body with that state.
 /// </para>
 /// </remarks>
 public sealed class Missile
