@@ -227,6 +227,21 @@ public class MissileTests
         Assert.Equal(BystanderId, hit.ObjectId);
     }
 
+    /// <summary>
+    /// A target that is not in the world (or the missile itself) is no error: retail's missile_ignore compares ids only,
+    /// so every creature is passed and the level arrow (z = 1.2, no gravity) flies on over the range, hitting nothing.
+    /// </summary>
+    [Theory]
+    [InlineData(0xDEAD_BEEFu)]
+    [InlineData(ArrowId)]
+    public void AnUnknownOrSelfTarget_PassesEveryCreature(uint target)
+    {
+        var missile = Missile.Launch(ArrowId, 0.1f, TestGeometry.At(100, 90.5f, 1.2f), new Vector3(0, 30, 0), target, gravity: false);
+        Assert.Empty(Fly(Range(), missile, 30, 1).Hits);
+        Assert.True(missile.InFlight);
+        Assert.Equal(120.5f, missile.State.Position.Frame.Origin.Y, 0.01f);
+    }
+
     /// <summary>get_object_info turns MISSILE_PS into PATH_CLIPPED for any move, also through Resolve: the missile stops at the wall instead of sliding along it.</summary>
     [Fact]
     public void AMissileMover_IsPathClipped_InResolveToo()
