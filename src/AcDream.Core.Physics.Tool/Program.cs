@@ -306,9 +306,13 @@ public static class Program
                 var fr = mover.Frames[f];
                 string hit = fr.CollidedObjects.Count == 0 ? "-" : string.Join(",", Hexes(fr.CollidedObjects));
                 string slide = fr.SlidingNormalValid ? $"{fr.SlidingNormal.X:F2},{fr.SlidingNormal.Y:F2}" : "-";
-                w.WriteLine($"{Printable(mover.Name),-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}{MotionColumns(fr)}");
+                w.WriteLine($"{Printable(mover.Name),-22} {f,5} {V(fr.Position)} 0x{fr.Cell:X8} {(fr.Contact ? 'C' : '.')} {(fr.OnWalkable ? 'W' : '.')} {slide,-6} {hit,-12} {(fr.Succeeded ? "ok" : "REFUSED")}{MotionColumns(fr)}{MissileHit(fr)}");
             }
     }
+
+    /// <summary>A missile's frame in which its hit was reported: what it hit and in which quantum of the flight.</summary>
+    private static string MissileHit(TrajectoryFrame fr) =>
+        fr.Hit is { } h ? $"  missile hit: {h.Kind}{(h.ObjectId != 0 ? $" 0x{h.ObjectId:X8}" : "")} (quantum {h.Quantum})" : "";
 
     /// <summary>A motion mover's frame: its heading (degrees clockwise from +Y) and the command in effect (the interpreted state).</summary>
     private static string MotionColumns(TrajectoryFrame fr)

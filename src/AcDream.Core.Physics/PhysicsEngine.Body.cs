@@ -172,7 +172,9 @@ public sealed partial class PhysicsEngine
         Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
     {
         b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
-        QuantumCore(mover, ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
+        bool prevOnWalkable = s.OnWalkable;
+        int accepted = _acceptedTransitions;
+        QuantumCore(QuantumMover(mover), ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
         // After SetPositionInternal: MovementManager::UseTime → MoveToManager::UseTime (Motion/ObjectMotion.MoveTo.cs).
         motion?.UseMoveTo(mover, ref s, b, quantum);
         // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
@@ -180,6 +182,8 @@ public sealed partial class PhysicsEngine
         // PositionManager::UseTime: the sticky timeout, and the interpolation's blip (SetPositionSimple).
         if (motion is not null && motion.PositionManager.UseTime(quantum, out var blipTarget))
             Blip(mover, ref s, ref b, blipTarget, motion.PositionManager);
+        if (_missile is not null)
+            AfterMissileQuantum(_acceptedTransitions != accepted, prevOnWalkable, s);
     }
 
     private void QuantumCore(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
@@ -223,6 +227,8 @@ public sealed partial class PhysicsEngine
             s.Position.Frame.Orientation = frame.Orientation;
             return;
         }
+        if ((ps & PhysicsState.AlignPath) != 0)
+            frame.Orientation = AlignPath.Heading(d, frame.Orientation); // UpdateObjectInternal: a missile points along its path
 
         // get_object_info: a body moving away from its contact plane faster than EPSILON is not in contact (check_contact).
         var seeded = s;

@@ -170,6 +170,8 @@ public sealed partial class PhysicsEngine
         info.State = mover.Flags;
         if ((mover.PhysicsState & PhysicsState.EdgeSlide) != 0)
             info.State |= ObjectInfoState.EdgeSlide;
+        if ((mover.PhysicsState & PhysicsState.Missile) != 0)
+            info.State |= ObjectInfoState.PathClipped; // CPhysicsObj::get_object_info: MISSILE_PS → PATH_CLIPPED
         info.Scale = mover.Scale;
         info.StepUpHeight = mover.StepUpHeight * mover.Scale;
         info.StepDownHeight = mover.StepDownHeight * mover.Scale;

@@ -91,6 +91,11 @@ public sealed class SceneMover
 
     /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>.</summary>
     public bool IsBody => _steps.Length > 0;
+    /// <summary>
+    /// The mover is a missile: a body (<see cref="IsBody"/>) whose state has <see cref="PhysicsState.Missile"/>, run as a
+    /// <see cref="Body.Missile"/> through <see cref="PhysicsEngine.Step(Body.Missile, double)"/> (its hit recorded once).
+    /// </summary>
+    public bool IsMissile => IsBody && !IsMotion && (Description.PhysicsState & PhysicsState.Missile) != 0;
     /// <summary>A body mover's state before the first frame (velocity, friction, elasticity…).</summary>
     public Body.BodyState StartBody { get; }
     /// <summary>A body mover's frames, repeats expanded; empty for an offset mover.</summary>

@@ -479,6 +479,7 @@ public static class SceneLoader
                 throw new SceneFormatException(o.Child("objectInfo"), "Contact and OnWalkable are per-frame state; use \"floorZ\" or \"airborne\".");
             float scale = o.Float("scale", 1f);
             Checked(o.Child("scale"), () => Guard.Positive(scale, o.Child("scale")));
+            uint target = o.Opt("target") is { } tv ? JsonRead.Id(tv, o.Child("target")) : 0;
             var start = ReadStart(o, path);
             if ((o.Has("motion") ? 1 : 0) + (o.Has("steps") ? 1 : 0) + (o.Has("commands") ? 1 : 0) != 1)
                 throw new SceneFormatException(path, "a mover needs exactly one of \"motion\" (per-frame offsets), \"steps\" (a body moved by time, velocity and jumps) or \"commands\" (a body moved by motion commands through a motion table).");
@@ -501,8 +502,27 @@ public static class SceneLoader
             if (o.Opt("body") is { } b)
                 body = ReadBody(b, o.Child("body"));
             o.End();
-            var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale));
-            return new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts], commands);
+            var description = Checked(path, () => new MoverDescription(id, spheres, stepUp, stepDown, state, info, scale, target));
+            var mover = new SceneMover(name, description, start, motion, steps, body, path, [.. itemStarts], commands);
+            if (target != 0 && !mover.IsMissile)
+                throw new SceneFormatException(o.Child("target"), "only a missile (a mover with \"steps\" and the Missile state) has a target.");
+            if (mover.IsMissile)
+                CheckMissile(o, mover);
+            return mover;
+        }
+
+        /// <summary>
+        /// A missile starts airborne (retail launches it in the air; <see cref="Missile"/> drops any contact) and is
+        /// moved by its velocity alone: its steps give no desired motion and no jump.
+        /// </summary>
+        private static void CheckMissile(JsonObj o, SceneMover mover)
+        {
+            if (!o.Has("airborne"))
+                throw new SceneFormatException(o.Child(o.Has("floorZ") ? "floorZ" : "start"), "a missile starts in the air: give \"airborne\": true.");
+            var steps = mover.Steps;
+            for (int f = 0; f < steps.Length; f++)
+                if (steps[f].DesiredVelocity != Vector3.Zero || steps[f].JumpVelocity != 0f)
+                    throw new SceneFormatException(mover.FramePath(f), "a missile's steps give no \"velocity\" or \"jump\": it moves by its body's velocity (give the launch velocity in \"body\").");
         }
 
         private static readonly string[] MotionOnlyFields = ["motionTable", "skills", "frames", "hz", "dt"];

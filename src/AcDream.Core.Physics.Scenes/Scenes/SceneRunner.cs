@@ -43,6 +43,7 @@ public static class SceneRunner
             var state = mover.Start;
             var body = mover.StartBody;
             var motion = mover.Commands?.Start(mover.Description, state, ref body, Earlier(scene, movers));
+            var missile = Launch(mover);
             for (int f = 0; f < mover.FrameCount; f++)
             {
                 SceneStep? step = null;
@@ -53,7 +54,7 @@ public static class SceneRunner
                     target.Frame.Origin += mover.Motion[f];
                 try
                 {
-                    frames.Add(Advance(engine, mover.Description, step, target, ref state, ref body, motion, f));
+                    frames.Add(Advance(engine, mover.Description, step, target, ref state, ref body, motion, f, missile));
                 }
                 catch (ArgumentException ex)
                 {
@@ -91,8 +92,15 @@ public static class SceneRunner
     /// engine accepts the input; its <see cref="ArgumentException"/> otherwise passes through.
     /// </summary>
     internal static TrajectoryFrame Advance(PhysicsEngine engine, MoverDescription description, SceneStep? step, in Position target,
-        ref MoverState state, ref BodyState body, SceneMotion.Cursor? motion = null, int frame = 0)
+        ref MoverState state, ref BodyState body, SceneMotion.Cursor? motion = null, int frame = 0, Missile? missile = null)
     {
+        if (step is { } m && missile is not null)
+        {
+            var flown = engine.Step(missile, m.Elapsed);
+            state = missile.State;
+            body = missile.Body;
+            return TrajectoryFrame.From(m, flown);
+        }
         if (step is { } s)
         {
             var stepped = motion is null
@@ -105,6 +113,21 @@ public static class SceneRunner
         var result = engine.Resolve(description, state, target);
         state = result.Next;
         return TrajectoryFrame.From(target, result);
+    }
+
+    /// <summary>A missile mover's <see cref="Body.Missile"/> at its start (airborne, with its start body), or null for any other mover.</summary>
+    internal static Missile? Launch(SceneMover mover)
+    {
+        if (!mover.IsMissile)
+            return null;
+        try
+        {
+            return new Missile(mover.Description, mover.Start.Position, mover.StartBody);
+        }
+        catch (ArgumentException ex)
+        {
+            throw Refused(mover, 0, ex);
+        }
     }
 
     /// <summary>A motion mover's frame: that frame's commands are given, then the body steps through the motion layer.</summary>

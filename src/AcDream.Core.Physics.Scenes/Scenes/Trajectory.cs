@@ -52,6 +52,26 @@ public sealed class TrajectoryFrame
     /// <summary>A motion mover's frame: its heading and the interpreted state after the step; null for other frames.</summary>
     public TrajectoryMotion? Motion { get; init; }
 
+    /// <summary>A missile's frame in which its hit was reported (<see cref="Body.MissileStepResult.Hit"/>); null for every other frame.</summary>
+    public TrajectoryHit? Hit { get; init; }
+
+    /// <summary>Builds a missile's frame from its step's result: a body frame, with the hit when this step reported it.</summary>
+    public static TrajectoryFrame From(SceneStep step, in Body.MissileStepResult result)
+    {
+        var frame = From(step, result.Step);
+        var hit = result.Hit;
+        return hit.Kind == Body.MissileHitKind.None ? frame : Copy(frame, new TrajectoryHit(hit.Kind, hit.ObjectId, hit.Quantum));
+    }
+
+    private static TrajectoryFrame Copy(TrajectoryFrame f, TrajectoryHit hit) => new()
+    {
+        Target = f.Target, Step = f.Step, Velocity = f.Velocity, Quanta = f.Quanta, Position = f.Position, Cell = f.Cell,
+        Contact = f.Contact, OnWalkable = f.OnWalkable, ContactPlaneValid = f.ContactPlaneValid, ContactPlane = f.ContactPlane,
+        ContactPlaneCell = f.ContactPlaneCell, CollisionNormalValid = f.CollisionNormalValid, CollisionNormal = f.CollisionNormal,
+        SlidingNormalValid = f.SlidingNormalValid, SlidingNormal = f.SlidingNormal, CollidedObjects = f.CollidedObjects,
+        Succeeded = f.Succeeded, Motion = f.Motion, Hit = hit,
+    };
+
     /// <summary>Builds a body frame from its input and the engine's result (copies the collided ids).</summary>
     public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result) =>
         Build(default, step, result.Body.Velocity, result.Quanta, result.Move);
@@ -99,6 +119,12 @@ public sealed class TrajectoryFrame
 /// <param name="Rotation">The mover's rotation after the step.</param>
 /// <param name="Interpreted">The interpreted motion state after the step.</param>
 public readonly record struct TrajectoryMotion(Quaternion Rotation, Motion.InterpretedMotionState Interpreted);
+
+/// <summary>A missile's hit as a trajectory records it: what was hit and in which quantum of the flight (see <see cref="Body.MissileHit"/>).</summary>
+/// <param name="Kind">Object or environment.</param>
+/// <param name="ObjectId">The object hit, or 0 for the environment.</param>
+/// <param name="Quantum">The quantum of the flight that hit, from 1.</param>
+public readonly record struct TrajectoryHit(Body.MissileHitKind Kind, uint ObjectId, int Quantum);
 
 /// <summary>The frames of one mover of a scene.</summary>
 public sealed class MoverTrajectory
@@ -232,6 +258,14 @@ public sealed class Trajectory
             }
             if (f.Motion is { } motion)
                 WriteMotion(w, motion);
+            if (f.Hit is { } hit)
+            {
+                w.WriteStartObject("hit");
+                w.WriteString("kind", hit.Kind.ToString());
+                w.WriteString("object", Hex(hit.ObjectId));
+                w.WriteNumber("quantum", hit.Quantum);
+                w.WriteEndObject();
+            }
             w.WriteEndObject();
         }
         return Encoding.UTF8.GetString(buffer.ToArray());
@@ -366,6 +400,13 @@ public sealed class Trajectory
                 throw new SceneFormatException(o.Child("motion"), "only a body frame (\"step\") has a motion record.");
             motion = ReadMotion(new JsonObj(me, o.Child("motion")));
         }
+        TrajectoryHit? hit = null;
+        if (o.Opt("hit") is { } he)
+        {
+            if (step is null)
+                throw new SceneFormatException(o.Child("hit"), "only a body frame (\"step\") has a missile's hit.");
+            hit = ReadHit(new JsonObj(he, o.Child("hit")));
+        }
         var cp = o.Obj("contactPlane");
         bool cpValid = JsonRead.Bool(cp.Req("valid"), cp.Child("valid"));
         var plane = new Plane(cp.Vec3("normal"), cp.Float("d"));
@@ -396,9 +437,27 @@ public sealed class Trajectory
             CollidedObjects = ids,
             Succeeded = JsonRead.Bool(o.Req("succeeded"), o.Child("succeeded")),
             Motion = motion,
+            Hit = hit,
         };
         o.End();
         return frame;
+    }
+
+    private static TrajectoryHit ReadHit(JsonObj o)
+    {
+        string kind = o.String("kind");
+        var k = kind switch
+        {
+            "Object" => Body.MissileHitKind.Object,
+            "Environment" => Body.MissileHitKind.Environment,
+            _ => throw new SceneFormatException(o.Child("kind"), $"unknown hit kind \"{kind}\" (known: Object, Environment)."),
+        };
+        uint id = o.Id("object");
+        int quantum = JsonRead.Int(o.Req("quantum"), o.Child("quantum"));
+        if (quantum < 1)
+            throw new SceneFormatException(o.Child("quantum"), $"must be 1 or more, got {quantum}.");
+        o.End();
+        return new TrajectoryHit(k, id, quantum);
     }
 
     private static (bool, Vector3) ReadFlagged(JsonObj o)

@@ -107,6 +107,15 @@ public static class TrajectoryReplay
             var body = mover.StartBody;
             // A StickTo follows the earlier movers' recorded frames (compared equal before this mover is replayed).
             var motion = mover.Commands?.Start(mover.Description, state, ref body, SceneRunner.Earlier(scene, trajectory.Movers, m));
+            Body.Missile? missile;
+            try
+            {
+                missile = SceneRunner.Launch(mover);
+            }
+            catch (SceneFormatException ex)
+            {
+                return Fail(new ReplayDifference(mover.Name, 0, "step", "a valid input", ex.Message), compared, tolerance, notes);
+            }
             for (int f = 0; f < recorded.Frames.Count; f++)
             {
                 var expected = recorded.Frames[f];
@@ -116,7 +125,7 @@ public static class TrajectoryReplay
                 TrajectoryFrame actual;
                 try
                 {
-                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body, motion, f);
+                    actual = SceneRunner.Advance(engine, mover.Description, expected.Step, expected.Target, ref state, ref body, motion, f, missile);
                 }
                 catch (ArgumentException ex)
                 {
@@ -177,7 +186,10 @@ public static class TrajectoryReplay
             ?? (expected.Step is null ? null
                 : Vec("body.velocity", expected.Velocity, actual.Velocity)
                 ?? (expected.Quanta != actual.Quanta ? D("body.quanta", Str(expected.Quanta), Str(actual.Quanta)) : null))
-            ?? CompareMotion(expected.Motion, actual.Motion);
+            ?? CompareMotion(expected.Motion, actual.Motion)
+            ?? (expected.Hit != actual.Hit ? D("hit", HitText(expected.Hit), HitText(actual.Hit)) : null);
+
+        static string HitText(TrajectoryHit? h) => h is { } v ? $"{v.Kind} 0x{v.ObjectId:X8} in quantum {v.Quantum}" : "none";
 
         ReplayDifference? CompareMotion(TrajectoryMotion? e, TrajectoryMotion? a)
         {

@@ -120,10 +120,23 @@ internal static class DeterminismRecord
         // A mover that sticks to an earlier one follows that mover's frames (the scene run so far).
         var earlier = moverIndex == 0 ? null : SceneRunner.Earlier(scene, SceneRunner.Run(scene).Movers, moverIndex);
         var motion = mover.Commands?.Start(mover.Description, state, ref body, earlier);
+        var missile = mover.IsMissile ? new AcDream.Core.Physics.Body.Missile(mover.Description, mover.Start.Position, mover.StartBody) : null;
         for (int f = 0; f < mover.FrameCount; f++)
         {
             MoveResult r;
-            if (mover.IsBody)
+            if (missile is not null)
+            {
+                // A missile (PhysicsEngine.Step(Missile, …)): its velocity, quanta and the hit of the step count too.
+                var flown = engine.Step(missile, mover.Steps[f].Elapsed);
+                foreach (float v in new[] { flown.Step.Body.Velocity.X, flown.Step.Body.Velocity.Y, flown.Step.Body.Velocity.Z })
+                    Add(BitConverter.SingleToUInt32Bits(v));
+                Add((uint)flown.Step.Quanta);
+                Add((uint)flown.Hit.Kind);
+                Add(flown.Hit.ObjectId);
+                Add((uint)flown.Hit.Quantum);
+                r = flown.Step.Move;
+            }
+            else if (mover.IsBody)
             {
                 // A body mover (PhysicsEngine.Step): its velocity and quanta count too; a motion mover's commands
                 // are given first and its interpreted state is hashed after the step (the orientation is in FrameValues).

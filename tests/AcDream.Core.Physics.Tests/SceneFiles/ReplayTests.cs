@@ -50,9 +50,9 @@ public class ReplayTests
     public void EveryBuiltInScene_HasMoversAtSeveralHeadings(string name)
     {
         var scene = SceneLibrary.Load(name);
-        // A motion mover heads where its start rotation faces (+Y of the rotation).
+        // A motion mover heads where its start rotation faces (+Y of the rotation); a missile where it is launched.
         var headings = scene.Movers.Select(m => m.IsMotion ? Vector3.Transform(Vector3.UnitY, m.Start.Position.Frame.Orientation)
-                : m.IsBody ? m.Steps[0].DesiredVelocity : m.Motion[0])
+                : m.IsMissile ? m.StartBody.Velocity : m.IsBody ? m.Steps[0].DesiredVelocity : m.Motion[0])
             .Select(d => MathF.Round(MathF.Atan2(d.Y, d.X) * 180 / MathF.PI)).Distinct().Count();
         Assert.True(headings >= 3, $"{name}: only {headings} distinct headings");
     }

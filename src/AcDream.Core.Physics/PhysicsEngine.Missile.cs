@@ -1,0 +1,54 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.Body;
+
+namespace AcDream.Core.Physics;
+
+public sealed partial class PhysicsEngine
+{
+    // The missile being stepped (Step(Missile, double)), read by each quantum; null otherwise.
+    private Missile? _missile;
+
+    /// <summary>
+    /// Advances a missile by <paramref name="elapsed"/> seconds the retail way: the body step of
+    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, double, Vector3, float)"/> (quanta of 1/30 to
+    /// 1/5 s, velocity and gravity, the transition) with the missile's rules (see <see cref="Missile"/>): no
+    /// step-down, the path clipped at the first collision, the missile-ignore rules of the object dispatch, and
+    /// after each quantum the hit reported once (objects first, then the environment). A quantum after the hit
+    /// moves the object as a plain body, without the Missile, AlignPath and PathClipped states.
+    /// Updates <paramref name="missile"/>'s state and body; allocates nothing once warm.
+    /// </summary>
+    /// <param name="missile">The missile.</param>
+    /// <param name="elapsed">Seconds since the last call, zero or more.</param>
+    /// <exception cref="ArgumentException">A non-finite or negative time, or a missile whose position is not in this world, named in the message; the missile is not changed.</exception>
+    public MissileStepResult Step(Missile missile, double elapsed)
+    {
+        ArgumentNullException.ThrowIfNull(missile);
+        bool inFlight = missile.InFlight;
+        _missile = missile;
+        BodyStepResult step;
+        try
+        {
+            step = Step(missile.Description, missile.State, missile.Body, elapsed, Vector3.Zero);
+        }
+        finally
+        {
+            _missile = null;
+        }
+        missile.State = step.Next;
+        missile.Body = step.Body;
+        return new MissileStepResult(step, inFlight ? missile.Hit : default);
+    }
+
+    /// <summary>The quantum's mover: a missile's current description (it loses its flight states at the hit).</summary>
+    private MoverDescription QuantumMover(MoverDescription mover) => _missile?.Description ?? mover;
+
+    /// <summary>After a quantum: a missile counts it and, when its transition was accepted, reports what it hit (handle_all_collisions).</summary>
+    private void AfterMissileQuantum(bool transitionAccepted, bool prevOnWalkable, in MoverState next)
+    {
+        var missile = _missile!;
+        missile.CountQuantum();
+        if (transitionAccepted)
+            missile.AfterTransition(_transition.CollisionInfo, _transition.World.Objects, prevOnWalkable, next);
+    }
+}
