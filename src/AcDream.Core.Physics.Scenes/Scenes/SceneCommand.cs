@@ -33,5 +33,7 @@ internal enum SceneCommandKind
 /// <param name="Path">Its JSON path, for error messages.</param>
 /// <param name="Target">The point a MoveTo goes to (landblock-local to the mover's landblock).</param>
 /// <param name="MoveTo">The MoveTo's parameters (retail's defaults unless the command names them).</param>
+/// <param name="ProgressRule">The MoveTo's progress rule: retail's client CountOnly unless the command opts in to GiveUp.</param>
 internal readonly record struct SceneCommand(int Frame, SceneCommandKind Kind, uint Motion, float Speed, HoldKey HoldKey, float Extent,
-    bool Stamina, string Path, System.Numerics.Vector3 Target = default, MoveToParameters MoveTo = default);
+    bool Stamina, string Path, System.Numerics.Vector3 Target = default, MoveToParameters MoveTo = default,
+    MoveToProgressRule ProgressRule = MoveToProgressRule.CountOnly);

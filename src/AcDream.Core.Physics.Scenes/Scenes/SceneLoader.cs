@@ -621,7 +621,7 @@ public static class SceneLoader
             if (kind != "jump" && o.Has("stamina"))
                 throw new SceneFormatException(o.Child("stamina"), "only \"jump\" takes \"stamina\".");
             if (kind != "moveTo")
-                foreach (string field in new[] { "distanceToObject", "walkRunThreshold" })
+                foreach (string field in new[] { "distanceToObject", "walkRunThreshold", "giveUp" })
                     if (o.Has(field))
                         throw new SceneFormatException(o.Child(field), $"only \"moveTo\" takes \"{field}\".");
             SceneCommand command;
@@ -657,7 +657,10 @@ public static class SceneLoader
                     if (!(threshold >= 0f && threshold <= 1000f))
                         throw new SceneFormatException(o.Child("walkRunThreshold"), $"must be 0 to 1000 m, got {threshold}.");
                     var parameters = MoveToParameters.Default with { DistanceToObject = distance, WalkRunThreshold = threshold };
-                    command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters);
+                    // "giveUp": true opts in to the server's cancel of a move that makes no progress
+                    // (MoveToProgressRule.GiveUp); without it the client's rule (CountOnly) only counts the failures.
+                    var rule = o.Bool("giveUp", false) ? MoveToProgressRule.GiveUp : MoveToProgressRule.CountOnly;
+                    command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters, rule);
                     break;
                 }
                 default:
