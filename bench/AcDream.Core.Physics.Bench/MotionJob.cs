@@ -68,9 +68,9 @@ public static class MotionJob
         var stop = new MotionParameters();
 
         // Creatures with retail's MoveToManager (issue 22): one chasing a point 60 m ahead (run, aim check, progress check
-        // every quantum; CountOnly so that the unchanging state each call repeats never ends the move), one whose
+        // every quantum; the default CountOnly, the client's rule, so that the unchanging state each call repeats never ends the move), one whose
         // manager is idle (its last move ended). Each call steps from the same state.
-        var chaser = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(200, 200)) { MoveToProgressRule = MoveToProgressRule.CountOnly };
+        var chaser = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(200, 200));
         chaser.SetCylinder(0.48f, 1.835f);
         var chaseBody = BodyState.Creature();
         chaser.Place(mover, start, ref chaseBody);

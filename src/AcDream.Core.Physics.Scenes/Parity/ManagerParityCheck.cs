@@ -28,6 +28,9 @@ internal static class ManagerParityCheck
     private const string TurnStartsAtCall =
         "departure turn-starts-at-call: retail's TurnToHeading begins its node at once (BeginNextNode, acclient.c:345953); ACE adds it and waits for the next UseTime (MoveToManager.cs:303), one quantum behind, so our frame f is compared with ACE's frame f+1, except its fail count on its first turn quantum (the spurious count: ACE's handler runs after the turn's motion completed, retail's while it is still pending)";
 
+    private const string ProgressClock =
+        "departure progress-clock: ACE's clock adds 1/30 s in double from 1000 s, 31 frames to pass 1 s; ours adds the float quantum, 30; so our progress checks fail {0} frames earlier (ours from frame {1}, ACE's from frame {2}) and from there our fail count at frame f is compared with ACE's at frame f+{0} (the last {0} frames' counts have no ACE frame)";
+
     public static ParityReport Check(ParitySet set)
     {
         if (set.Managers is not { } file)
@@ -42,11 +45,13 @@ internal static class ManagerParityCheck
         var state = file.Start;
         var body = Body.BodyState.Creature();
         motion.Place(file.Mover, state, ref body);
-        int frames = 0, within = 0, identical = 0, mismatches = 0, gaveUpAt = -1, transitionsAfter = 0, aceFails = 0;
+        int frames = 0, within = 0, identical = 0, mismatches = 0;
         double maxDifference = 0;
         string? firstFailure = null;
         uint sought = 0;
         int countingFrom = -1; // the frame our progress checks first failed (progress-clock departure)
+        int aceCountingFrom = shift == 0 ? Array.FindIndex(file.Frames, x => x.FailProgressCount > 0) : -1;
+        int clock = 0; // how many frames earlier ours began counting than ACE's, once both did
         for (int f = 0; f < file.Frames.Length; f++)
         {
             ref readonly var frame = ref file.Frames[f];
@@ -78,18 +83,6 @@ internal static class ManagerParityCheck
             if (!atCall && frame.TargetUpdate is { } update && sought != 0)
                 motion.UpdateMoveToTarget(sought, update, file.Mover, state, body);
             bool endedNow = !endedBefore && motion.MoveToStatus == MoveToStatus.Ended;
-            if (gaveUpAt >= 0)
-            {
-                transitionsAfter += step.Transitions;
-                aceFails = frame.FailProgressCount;
-                continue;
-            }
-            if (endedNow && motion.MoveToResult == MoveToError.CantGetThere && frame.Kind != MoveToKind.Invalid)
-            {
-                // Named departure: our MoveTo gives up where ACE's keeps running (ObjectMotion.MoveToProgressRule).
-                gaveUpAt = f;
-                continue;
-            }
             int e = f + shift;
             if (e >= file.Frames.Length)
                 break;
@@ -103,8 +96,17 @@ internal static class ManagerParityCheck
             // ACE's first turn quantum counts a failed check that retail's order never shows (the turn begun at the call is
             // still pending when the first handler runs); part of turn-starts-at-call, the count is not compared there.
             if (countingFrom < 0 && motion.MoveToFailProgressCount > 0)
+            {
                 countingFrom = f;
-            string? flag = Difference(expected, state, motion, endedNow, compareFails: !(shift != 0 && e == 1) && countingFrom < 0);
+                if (aceCountingFrom > f)
+                    clock = aceCountingFrom - f;
+            }
+            // Under progress-clock our count runs `clock` frames ahead of ACE's: compared with ACE's count that many
+            // frames on, not at all where the file has no such frame. Otherwise compared frame for frame.
+            int? aceFails = shift != 0 && e == 1 ? null
+                : clock == 0 ? expected.FailProgressCount
+                : f + clock < file.Frames.Length ? file.Frames[f + clock].FailProgressCount : null;
+            string? flag = Difference(expected, state, motion, endedNow, aceFails, clock);
             if (flag is not null) mismatches++;
             if (firstFailure is null)
             {
@@ -120,10 +122,13 @@ internal static class ManagerParityCheck
             ParityReport.Count(frames, "frame"), within, ParityCheck.Tolerance.ToString("0e0", c), identical,
             maxDifference == 0 ? "0" : maxDifference.ToString("0.###e0", c), ParityReport.Count(mismatches, "flag mismatch", "flag mismatches"));
         string? verdict = null;
-        if (gaveUpAt >= 0)
-            verdict = string.Format(c,
-                "departs at frame {0}: ours gives up (CantGetThere: CheckProgressMade, less than 0.25 m/s over more than 1 s, acclient.c:344832, failing from frame {6} for a further second: ObjectMotion.MoveToProgressRule GiveUp), then {1} transitions in the {2} frames left; ACE keeps the move for ever (it counts failed checks and never acts on them, MoveToManager.cs:456-460: fail count {3} at its last frame); frames 0-{4}: {5}; fail counts compared until frame {6} (departure progress-clock: ACE's clock adds 1/30 s in double from 1000 s, 31 frames to pass 1 s; ours adds the float quantum, 30)",
-                gaveUpAt, transitionsAfter, file.Frames.Length - gaveUpAt - 1, aceFails, gaveUpAt - 1, counts, countingFrom);
+        if (clock != 0 && firstFailure is null)
+            verdict = string.Format(c, "ok (within {0} m, headings within {1} deg) under {2}; our fail count {3} at the last frame, ACE's {4}; {5}",
+                ParityCheck.Tolerance.ToString("0e0", c), HeadingTolerance.ToString("0e0", c),
+                string.Format(c, ProgressClock, clock, countingFrom, aceCountingFrom),
+                motion.MoveToFailProgressCount, file.Frames[^1].FailProgressCount, counts);
+        else if (clock != 0)
+            verdict = string.Format(c, "under {0}: {1}", string.Format(c, ProgressClock, clock, countingFrom, aceCountingFrom), counts);
         else if (shift != 0 && firstFailure is null)
             verdict = $"ok (within {ParityCheck.Tolerance.ToString("0e0", c)} m, headings within {HeadingTolerance.ToString("0e0", c)} deg) under {TurnStartsAtCall}; {counts}";
         string? note = shift != 0 ? TurnStartsAtCall
@@ -133,7 +138,7 @@ internal static class ManagerParityCheck
         return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note) { Verdict = verdict };
     }
 
-    private static string? Difference(in ManagerFrame e, in MoverState a, ObjectMotion m, bool endedNow, bool compareFails)
+    private static string? Difference(in ManagerFrame e, in MoverState a, ObjectMotion m, bool endedNow, int? aceFails, int clock)
     {
         if (a.Position.CellId != e.Cell) return $"cell: expected 0x{e.Cell:X8}, actual 0x{a.Position.CellId:X8}";
         if (a.Contact != e.Contact) return $"contact: expected {e.Contact}, actual {a.Contact}";
@@ -148,8 +153,11 @@ internal static class ManagerParityCheck
             return string.Format(CultureInfo.InvariantCulture, "interpreted: expected forward 0x{0:X8}×{1:R} turn 0x{2:X8}×{3:R}, actual 0x{4:X8}×{5:R} 0x{6:X8}×{7:R}",
                 e.ForwardCommand, e.ForwardSpeed, e.TurnCommand, e.TurnSpeed, i.ForwardCommand, i.ForwardSpeed, i.TurnCommand, i.TurnSpeed);
         if (m.MoveToKind != e.Kind || m.MoveToCommand != e.Command || m.MoveToAuxCommand != e.AuxCommand
-            || compareFails && m.MoveToFailProgressCount != e.FailProgressCount)
-            return $"moveTo: expected {e.Kind} command 0x{e.Command:X8} aux 0x{e.AuxCommand:X8} fails {e.FailProgressCount}, actual {m.MoveToKind} 0x{m.MoveToCommand:X8} 0x{m.MoveToAuxCommand:X8} {m.MoveToFailProgressCount}";
+            || aceFails is { } fails && m.MoveToFailProgressCount != fails)
+        {
+            string expectedFails = aceFails is null ? "not compared" : clock == 0 ? $"{aceFails}" : $"{aceFails} (ACE's frame +{clock}, progress-clock)";
+            return $"moveTo: expected {e.Kind} command 0x{e.Command:X8} aux 0x{e.AuxCommand:X8} fails {expectedFails}, actual {m.MoveToKind} 0x{m.MoveToCommand:X8} 0x{m.MoveToAuxCommand:X8} {m.MoveToFailProgressCount}";
+        }
         string? ours = endedNow ? Name(m.MoveToResult) : null;
         if (ours != e.Completed)
             return $"completion: expected {e.Completed ?? "none"}, actual {ours ?? "none"}";

@@ -44,6 +44,8 @@ internal enum SceneCommandKind
 /// <param name="TargetMover">The index in the scene of the mover stuck to (StickTo).</param>
 /// <param name="Radius">The target's radius, m (StickTo).</param>
 /// <param name="Height">The target's height, m (StickTo).</param>
+/// <param name="ProgressRule">The MoveTo's progress rule: retail's client CountOnly unless the command opts in to GiveUp.</param>
 internal readonly record struct SceneCommand(int Frame, SceneCommandKind Kind, uint Motion, float Speed, HoldKey HoldKey, float Extent,
     bool Stamina, string Path, System.Numerics.Vector3 Target = default, MoveToParameters MoveTo = default, Position Position = default,
-    bool KeepHeading = false, int TargetMover = -1, float Radius = 0f, float Height = 0f);
+    bool KeepHeading = false, int TargetMover = -1, float Radius = 0f, float Height = 0f,
+    MoveToProgressRule ProgressRule = MoveToProgressRule.CountOnly);

@@ -681,7 +681,10 @@ public static class SceneLoader
                     if (!(threshold >= 0f && threshold <= 1000f))
                         throw new SceneFormatException(o.Child("walkRunThreshold"), $"must be 0 to 1000 m, got {threshold}.");
                     var parameters = MoveToParameters.Default with { DistanceToObject = distance, WalkRunThreshold = threshold };
-                    command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters);
+                    // "giveUp": true opts in to the server's cancel of a move that makes no progress
+                    // (MoveToProgressRule.GiveUp); without it the client's rule (CountOnly) only counts the failures.
+                    var rule = o.Bool("giveUp", false) ? MoveToProgressRule.GiveUp : MoveToProgressRule.CountOnly;
+                    command = new SceneCommand(frame, SceneCommandKind.MoveTo, 0, 1f, HoldKey.Invalid, 0f, false, path, target, parameters, ProgressRule: rule);
                     break;
                 }
                 case "interpolateTo":
@@ -729,7 +732,7 @@ public static class SceneLoader
         }
 
         private static readonly (string Field, string Owner)[] ManagerFields =
-            [("distanceToObject", "moveTo"), ("walkRunThreshold", "moveTo"), ("landblock", "interpolateTo"), ("keepHeading", "interpolateTo"), ("rotation", "interpolateTo"), ("radius", "stickTo"), ("height", "stickTo")];
+            [("distanceToObject", "moveTo"), ("walkRunThreshold", "moveTo"), ("giveUp", "moveTo"), ("landblock", "interpolateTo"), ("keepHeading", "interpolateTo"), ("rotation", "interpolateTo"), ("radius", "stickTo"), ("height", "stickTo")];
 
         private static HoldKey ReadHoldKey(JsonElement e, string path)
         {

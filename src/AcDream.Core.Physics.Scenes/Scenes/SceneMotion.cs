@@ -107,6 +107,7 @@ internal sealed class SceneMotion
                     uint cell = LandDefs.LandCellAt(state.Position.CellId >> 16, c.Target);
                     if (cell == 0)
                         throw new ArgumentException($"moveTo: {c.Target} is outside the mover's landblock (0..192 m on X and Y).", "moveTo");
+                    Motion.MoveToProgressRule = c.ProgressRule;
                     Motion.MoveToPosition(new Position(cell, c.Target), c.MoveTo, mover, state, body);
                     break;
                 }

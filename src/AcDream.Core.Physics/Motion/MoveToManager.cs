@@ -66,6 +66,7 @@ internal sealed class MoveToManager
     /// <summary>What the last move ended with, and whether it has ended since it started.</summary>
     public MoveToError Result;
     public MoveToStatus Status;
+    /// <summary>CountOnly (0, the default) is retail's client; GiveUp is the opt-in server cancel (MoveToProgressRule).</summary>
     public MoveToProgressRule ProgressRule;
     /// <summary>The object an arrival with <see cref="MoveToFlags.Sticky"/> asked to stick to (PositionManager::StickTo), 0 when none.</summary>
     public uint StickTarget;
@@ -526,9 +527,9 @@ internal sealed class MoveToManager
             {
                 if (FailProgressCount++ == 0)
                     FailingSince = Now;
-                // The give-up rule (not the 2013 client's, which only counts): the checks have kept failing for a
-                // further whole window (no progress for more than 2 s in all), not a passing dip such as a creature
-                // turning about to move away.
+                // Retail's client only counts (CountOnly, the default). The opt-in GiveUp rule stands for the server's
+                // cancel of a creature that makes no progress: the checks have kept failing for a further whole window
+                // (no progress for more than 2 s in all), not a passing dip such as a creature turning about to move away.
                 if (ProgressRule == MoveToProgressRule.GiveUp && Now - FailingSince > ProgressWindow)
                     CancelMoveTo(MoveToError.CantGetThere);
             }

@@ -2,8 +2,8 @@ namespace AcDream.Core.Physics.Motion;
 
 /// <summary>
 /// How a MoveTo or turn ended: retail's WeenieError codes the MoveToManager passes to CancelMoveTo and
-/// CleanUpAndCallWeenie (acclient-src PORTAL/canim/CMoveToManager.c), plus <see cref="CantGetThere"/> for the give-up
-/// rule (<see cref="ObjectMotion.MoveToProgressRule"/>).
+/// CleanUpAndCallWeenie (acclient-src PORTAL/canim/CMoveToManager.c), plus <see cref="CantGetThere"/> for the opt-in
+/// server give-up rule (<see cref="MoveToProgressRule.GiveUp"/>).
 /// </summary>
 public enum MoveToError : uint
 {
@@ -19,7 +19,8 @@ public enum MoveToError : uint
     NoObject = 0x38,
     /// <summary>
     /// CantGetThere (0x39, "Unable to move to object!"): the move made too little progress (CheckProgressMade failed:
-    /// less than 0.25 m/s over more than 1 s) and <see cref="ObjectMotion.MoveToProgressRule"/> gives up.
+    /// less than 0.25 m/s over more than 1 s) under the opt-in server rule <see cref="MoveToProgressRule.GiveUp"/> (retail's
+    /// client, <see cref="MoveToProgressRule.CountOnly"/>, never ends a move so).
     /// </summary>
     CantGetThere = 0x39,
     /// <summary>YouChargedTooFar (0x3D): farther than the fail distance from where the move started.</summary>
@@ -56,19 +57,25 @@ public enum MoveToKind
     TurnToHeading = 9,
 }
 
-/// <summary>What a MoveTo does when its progress check fails (see <see cref="ObjectMotion.MoveToProgressRule"/>).</summary>
+/// <summary>
+/// What a MoveTo does when its progress check fails (see <see cref="ObjectMotion.MoveToProgressRule"/>). The default,
+/// <see cref="CountOnly"/>, is the 2013 client's; <see cref="GiveUp"/> is an opt-in server rule.
+/// </summary>
 public enum MoveToProgressRule
 {
     /// <summary>
-    /// The move ends with <see cref="MoveToError.CantGetThere"/> once its progress checks have kept failing for a further
-    /// progress window (1 s) after the first failure, so no progress for more than 2 s in all; a passing dip (a creature
-    /// turning about to move away) does not end it. A server's rule: the 2013 client only counts the failures, see
-    /// <see cref="CountOnly"/>. The default.
-    /// </summary>
-    GiveUp,
-    /// <summary>
-    /// The 2013 client's MoveToManager exactly: fail_progress_count grows by one per failed check (acclient.c:345659,
-    /// 345769) and nothing reads it; a blocked mover runs in place until its owner cancels the move.
+    /// The default, retail's client exactly: CMoveToManager's HandleMoveToPosition and HandleTurnToHeading add one to
+    /// fail_progress_count per failed check (acclient.c:345659, 345769) and nothing in the manager reads it; a blocked
+    /// mover runs in place until its owner cancels the move.
     /// </summary>
     CountOnly,
+    /// <summary>
+    /// Not retail's client (opt-in): CMoveToManager never ends a move for lack of progress. This stands for the server's
+    /// cancel of a creature whose move makes no progress (retail's monster AI reads the fail count and cancels the move
+    /// after a time, outside the manager): the move ends with <see cref="MoveToError.CantGetThere"/> once its progress
+    /// checks (CheckProgressMade: less than 0.25 m/s over more than 1 s) have kept failing for a further progress window
+    /// (1 s) after the first failure, so no progress for more than 2 s in all; a passing dip (a creature turning about to
+    /// move away) does not end it.
+    /// </summary>
+    GiveUp,
 }

@@ -28,10 +28,14 @@ public sealed partial class ObjectMotion
         _height = height;
     }
 
-    /// <summary>What a move does when its progress check fails: <see cref="Motion.MoveToProgressRule.GiveUp"/> (default) or the 2013 client's <see cref="Motion.MoveToProgressRule.CountOnly"/>.</summary>
+    /// <summary>
+    /// What a move does when its progress check fails: the 2013 client's <see cref="Motion.MoveToProgressRule.CountOnly"/>
+    /// (default: count the failures, keep moving) or the opt-in server rule <see cref="Motion.MoveToProgressRule.GiveUp"/>
+    /// (end with CantGetThere after a further second of failed checks). Kept for every later move of this object.
+    /// </summary>
     public MoveToProgressRule MoveToProgressRule
     {
-        get => _moveTo?.ProgressRule ?? MoveToProgressRule.GiveUp;
+        get => _moveTo?.ProgressRule ?? MoveToProgressRule.CountOnly;
         set
         {
             if (value is not (MoveToProgressRule.GiveUp or MoveToProgressRule.CountOnly))

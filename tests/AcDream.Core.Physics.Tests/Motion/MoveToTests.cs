@@ -134,13 +134,15 @@ public class MoveToTests
     }
 
     [Fact]
-    public void AStuckCreature_GivesUpWithinRetailsTime_ThenCostsNoTransitions()
+    public void AStuckCreature_UnderTheServerRule_GivesUpWithinRetailsTime_ThenCostsNoTransitions()
     {
+        // GiveUp is opt-in (the server's cancel of a creature that makes no progress, not the client's manager).
         // Running at the door's slab from 12 m away (9.5 m/s): blocked after about 1.2 s (frame 35). CheckProgressMade
         // judges windows longer than 1 s, so the first window wholly spent against the slab fails at most two windows
         // (2 × 31 quanta) after the stop; the give-up rule waits one more window of failing checks: the move ends with
         // CantGetThere by frame 35 + 3 × 31 = 128.
         var rig = Rig(Bench.DoorScene.Create().World, 100f, 88f);
+        rig.Motion.MoveToProgressRule = MoveToProgressRule.GiveUp;
         rig.Motion.MoveToPosition(TestGeometry.At(100f, 104f, 0f), MoveToParameters.Default with { WalkRunThreshold = 1f }, rig.Mover, rig.State, rig.Body);
         int ended = RunUntilEnded(rig, 300);
         Assert.InRange(ended, 40, 128);
@@ -159,14 +161,26 @@ public class MoveToTests
     }
 
     [Fact]
-    public void TheClientRule_CountsFailures_AndKeepsRunningInPlace()
+    public void TheDefault_IsTheClientsCountOnly_AndABlockedMoveKeepsRunningInPlace()
     {
+        // Retail's CMoveToManager adds one to fail_progress_count per failed check (acclient.c:345659) and never reads
+        // it, so nothing in the client ends a blocked move. Same run as the give-up test, default rule: blocked by frame
+        // 35, its first failed check at most two windows later (35 + 2 × 31 = 97), then one more failure per quantum
+        // (the run motion is no longer pending): by frame 200 at least 200 - 97 = 103 failures, the move still on.
         var rig = Rig(Bench.DoorScene.Create().World, 100f, 88f);
-        rig.Motion.MoveToProgressRule = MoveToProgressRule.CountOnly;
+        Assert.Equal(MoveToProgressRule.CountOnly, rig.Motion.MoveToProgressRule);
+        Assert.Equal(MoveToProgressRule.CountOnly, default(MoveToProgressRule));
         rig.Motion.MoveToPosition(TestGeometry.At(100f, 104f, 0f), MoveToParameters.Default with { WalkRunThreshold = 1f }, rig.Mover, rig.State, rig.Body);
-        rig.Frames(200);
+        rig.Frames(150);
+        var stuckAt = rig.Origin;
+        int countAt150 = rig.Motion.MoveToFailProgressCount;
+        rig.Frames(50);
         Assert.Equal(MoveToStatus.Moving, rig.Motion.MoveToStatus);
-        Assert.True(rig.Motion.MoveToFailProgressCount > 50); // one per quantum once the window fails
+        Assert.Equal(MoveToError.None, rig.Motion.MoveToResult);
+        Assert.Equal(MotionCommand.RunForward, rig.Motion.Interpreted.ForwardCommand); // still running into the slab
+        Assert.True(rig.Motion.MoveToFailProgressCount >= 103, $"fail count {rig.Motion.MoveToFailProgressCount}");
+        Assert.Equal(countAt150 + 50, rig.Motion.MoveToFailProgressCount); // one per quantum, never reset
+        Assert.Equal(stuckAt.Y, rig.Origin.Y, 3); // in place against the slab
     }
 
     [Fact]
@@ -276,7 +290,10 @@ public class MoveToTests
     {
         // MoveAway alone: WalkForward while closer than MinDistance (get_command), aiming 180° from the point
         // (get_desired_heading), so it turns about while walking; done once the cylinder distance is at least 5 m.
+        // Under the opt-in GiveUp rule too: the checks failing while it turns about are a passing dip, not a give-up
+        // (the client's default never gives up at all).
         var rig = Rig();
+        rig.Motion.MoveToProgressRule = MoveToProgressRule.GiveUp;
         var p = MoveToParameters.Default with { Flags = (MoveToFlags.RetailDefault & ~MoveToFlags.MoveTowards) | MoveToFlags.MoveAway, MinDistance = 5f };
         rig.Motion.MoveToPosition(TestGeometry.At(60f, 62f, 0f), p, rig.Mover, rig.State, rig.Body);
         int ended = RunUntilEnded(rig, 600);

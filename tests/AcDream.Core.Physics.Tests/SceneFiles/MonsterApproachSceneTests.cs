@@ -7,7 +7,8 @@ namespace AcDream.Core.Physics.Tests.SceneFiles;
 /// <summary>
 /// The built-in monster-approach scene: retail's MoveToManager has no path finding, so creatures whose straight line
 /// only grazes the tree or the house corner slide round and arrive, and those meeting the tree or the wall head on
-/// stop against it and give up through CheckProgressMade (then stand still).
+/// stop against it and give up through CheckProgressMade (then stand still): the scene opts in to the server's cancel
+/// ("giveUp": true); without it the client's rule only counts and they keep running in place.
 /// </summary>
 public class MonsterApproachSceneTests
 {
@@ -40,5 +41,19 @@ public class MonsterApproachSceneTests
         Assert.Equal(At(name, 100), At(name, 239));
         Assert.Equal(MotionCommand.Ready, frames[193].Motion!.Value.Interpreted.ForwardCommand);
         Assert.True(At(name, 239).Y < 96f); // it never got past
+    }
+
+    [Fact]
+    public void WithoutTheGiveUpOptIn_AHeadOnCreature_KeepsRunningInPlace()
+    {
+        // The client's rule (CountOnly, the default) never ends the move: still RunForward at the last frame, no further on.
+        string original = SceneLibrary.ReadText("monster-approach");
+        string text = original.Replace(", \"giveUp\": true }", " }");
+        Assert.Equal(4, (original.Length - text.Length) / ", \"giveUp\": true".Length); // the four commands' opt-ins removed
+        var run = SceneRunner.Run(SceneLoader.Load(text, "monster-approach"));
+        var frames = run.Movers.Single(m => m.Name == "meets-the-wall").Frames;
+        Assert.Equal(MotionCommand.RunForward, frames[239].Motion!.Value.Interpreted.ForwardCommand);
+        Assert.True(frames[239].Position.Y < 96f);
+        Assert.Equal(MotionCommand.Ready, Mover("meets-the-wall").Frames[239].Motion!.Value.Interpreted.ForwardCommand);
     }
 }

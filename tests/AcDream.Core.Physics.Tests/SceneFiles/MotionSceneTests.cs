@@ -175,6 +175,12 @@ public class MotionSceneTests
         Refused(doc, "movers[0].commands[1]", "commands must be in time order");
         doc = Doc(); Command(doc, 1)["stamina"] = false;
         Refused(doc, "movers[0].commands[1].stamina", "only \"jump\" takes");
+        doc = Doc(); Command(doc, 1)["giveUp"] = true;
+        Refused(doc, "movers[0].commands[1].giveUp", "only \"moveTo\" takes");
+        doc = Doc(); Command(doc, 1).Remove("stop"); Command(doc, 1)["moveTo"] = new JsonArray(100, 95, 0); Command(doc, 1)["giveUp"] = "yes";
+        Refused(doc, "movers[0].commands[1].giveUp", "expected true or false");
+        doc = Doc(); Command(doc, 1).Remove("stop"); Command(doc, 1)["moveTo"] = new JsonArray(100, 95, 0); Command(doc, 1)["giveup"] = true;
+        Refused(doc, "movers[0].commands[1].giveup", "unknown field");
         doc = Doc(); Command(doc, 1)["sped"] = 2;
         Refused(doc, "movers[0].commands[1].sped", "unknown field");
         doc = Doc(); Command(doc, 1).Remove("stop");
