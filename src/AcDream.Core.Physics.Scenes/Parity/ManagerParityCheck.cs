@@ -12,7 +12,7 @@ namespace AcDream.Core.Physics.Parity;
 /// <see cref="HeadingTolerance"/>, the cell, contact and walkable flags, the interpreted forward and turn commands and
 /// speeds (to the bit), the manager's movement type, command, aim turn and fail count, and the frame and code of the
 /// completion. Where ACE departs from the decompile a named departure says what is compared instead, and the line says
-/// so (never "ok" for what was not compared). The position managers' files are only listed.
+/// so (never "ok" for what was not compared). The position managers' files go to <see cref="PositionManagerParityCheck"/>.
 /// </summary>
 internal static class ManagerParityCheck
 {
@@ -33,11 +33,10 @@ internal static class ManagerParityCheck
 
     public static ParityReport Check(ParitySet set)
     {
+        if (set.Positions is { } positions)
+            return PositionManagerParityCheck.Check(positions);
         if (set.Managers is not { } file)
-            return new ParityReport(set.Name, false, 0, 0, 0, 0, 0, 0, null)
-            {
-                Verdict = "not compared here (position managers: StickyManager, InterpolationManager and PositionManager are checked with their own work)",
-            };
+            throw new ArgumentException($"{set.Name} is not a managers' file.", nameof(set));
         int shift = file.Name.StartsWith("turnto-heading", StringComparison.Ordinal) ? 1 : 0;
         var engine = new PhysicsEngine(file.World);
         var motion = new ObjectMotion(file.Table, file.Skills);

@@ -48,13 +48,13 @@ internal sealed record ManagerParityFile(
 /// Reads an "ace-manager-parity" file (ACE's MoveToManager, StickyManager and InterpolationManager recorded quantum by
 /// quantum on the ace-motion world and table; described in the reference data's README). The MoveTo calls are read from
 /// the frames' recorded ACE calls; a MoveToObject's target updates from the recorded TargetInfo (a new lastUpdateTime).
-/// Files of the position managers (sticky, interpolate) are not read here. Errors name the JSON path. Load-time only.
+/// Files of the position managers (sticky, interpolate) are read by <see cref="PositionManagerParityReader"/>. Errors name the JSON path. Load-time only.
 /// </summary>
 internal static class ManagerParityReader
 {
     public const string Format = "ace-manager-parity";
 
-    /// <summary>The position managers' files, which this check does not compare (PositionManager work).</summary>
+    /// <summary>The position managers' files (sticky, interpolate), read by <see cref="PositionManagerParityReader"/>.</summary>
     public static bool IsPositionManagerFile(string name) =>
         name.StartsWith("sticky", StringComparison.Ordinal) || name.StartsWith("interpolate", StringComparison.Ordinal);
 

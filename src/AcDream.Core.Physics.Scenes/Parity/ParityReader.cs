@@ -73,10 +73,14 @@ internal static class ParityReader
         {
             if (root.TryGetProperty("frames", out var mframes) && mframes.ValueKind == JsonValueKind.Array && mframes.GetArrayLength() > MaxFramesPerFile)
                 throw new SceneFormatException("frames", $"the file holds more than {MaxFramesPerFile} frames.");
-            // The position managers' files are listed, not read (ManagerParityCheck prints why).
-            var managers = ManagerParityReader.IsPositionManagerFile(name) ? null : ManagerParityReader.Read(root, name, directory);
-            return new ParitySet(name, managers?.World ?? MotionParityReader.SharedWorld(), [], RequireBitIdentical: false, Managers: managers,
-                ManagerFile: true);
+            // The position managers' files (sticky, interpolate) are read by their own reader (PositionManagerParityCheck).
+            if (ManagerParityReader.IsPositionManagerFile(name))
+            {
+                var positions = PositionManagerParityReader.Read(root, name, directory);
+                return new ParitySet(name, positions.World, [], RequireBitIdentical: false, ManagerFile: true, Positions: positions);
+            }
+            var managers = ManagerParityReader.Read(root, name, directory);
+            return new ParitySet(name, managers.World, [], RequireBitIdentical: false, Managers: managers, ManagerFile: true);
         }
         if (format == MotionParityReader.Format)
         {

@@ -6,8 +6,8 @@ namespace AcDream.Core.Physics.Tests.Motion;
 
 /// <summary>
 /// The shared ACE managers folder (shared/ace-managers) through the MoveToManager: the files that follow retail match
-/// frame by frame, the blocked move matches under the named progress-clock departure, and the position managers' files are
-/// listed as not compared — no line says ok for what was not compared. Compiled only when the folder exists.
+/// frame by frame, the blocked move matches under the named progress-clock departure, the position managers' files compared where ACE
+/// follows retail and their departures named — no line says ok for what was not compared. Compiled only when the folder exists.
 /// </summary>
 public class SharedManagerParityTests
 {
@@ -44,14 +44,50 @@ public class SharedManagerParityTests
         Assert.Equal(0, report.FlagMismatches);
     }
 
-    [Theory]
-    [InlineData("sticky.json.gz")]
-    [InlineData("interpolate.json.gz")]
-    [InlineData("interpolate-applied-offset.json.gz")]
-    public void ThePositionManagersFiles_AreListedAsNotCompared(string file)
+    [Fact]
+    public void Sticky_MatchesUntilOurStickEnds_UnderTheQuantumClockDeparture()
     {
-        string line = Check(file).ToString();
-        Assert.Contains("not compared here", line);
-        Assert.DoesNotContain("ok", line);
+        // Ours ends the stick in frame 32 (30 float quanta exceed 1 s), ACE's in frame 33 (README of the data: timer
+        // adds a double 1/30); frames 0-32 compared, the rest named as not compared.
+        var report = Check("sticky.json.gz");
+        string line = report.ToString();
+        Assert.True(report.Passed, line);
+        Assert.StartsWith("sticky.json.gz: ok (within 1e-3 m", line);
+        Assert.Contains("frames 0-32 under departure quantum-clock", line);
+        Assert.Contains("frames 33-59 not compared", line);
+        Assert.Equal(33, report.Frames);
+        Assert.Equal(report.Frames, report.WithinTolerance);
+        Assert.Equal(0, report.FlagMismatches);
+    }
+
+    [Fact]
+    public void InterpolateAppliedOffset_MatchesAce_AndTheFailedNodeWhereAceThrows()
+    {
+        // ACE throws from frame 104 to 119 (the update behind the door failed); retail blips there: those 16 frames are
+        // compared with the failed node (100, 101.5), the other 164 with ACE.
+        var report = Check("interpolate-applied-offset.json.gz");
+        string line = report.ToString();
+        Assert.True(report.Passed, line);
+        Assert.StartsWith("interpolate-applied-offset.json.gz: ok (within 1e-3 m", line);
+        Assert.Contains("frames 0-103 and 120-179 under departure blip-failed-node", line);
+        Assert.Contains("(16 of 16 there)", line);
+        Assert.Equal(164, report.Frames);
+        Assert.Equal(report.Frames, report.WithinTolerance);
+    }
+
+    [Fact]
+    public void Interpolate_AsShipped_DepartsAndComparesNothing()
+    {
+        // ACE as shipped jumps onto the reported points (frames 6, 18, ..., 90) and throws from frame 120; ours smooths,
+        // stops at the door (y 99.43), blips behind it at 104 and to the 150 m update at 120.
+        var report = Check("interpolate.json.gz");
+        string line = report.ToString();
+        Assert.StartsWith("interpolate.json.gz: departs (nothing compared)", line);
+        Assert.DoesNotContain(": ok", line);
+        Assert.Equal(0, report.Frames);
+        Assert.Contains("jumps onto a reported point 8 times", line);
+        Assert.Contains("stops at the door at y 99.43", line);
+        Assert.Contains("blips 2 times (frames 104 and 120", line);
+        Assert.Contains("ends at 0xA9B50023 (100, 59.5)", line);
     }
 }

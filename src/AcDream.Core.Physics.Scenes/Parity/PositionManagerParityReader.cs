@@ -1,0 +1,160 @@
+using System;
+using System.Globalization;
+using System.Numerics;
+using System.Text.Json;
+using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Scenes;
+
+namespace AcDream.Core.Physics.Parity;
+
+/// <summary>
+/// One frame of a position managers' parity file: the InterpolateTo or stick_to_object call made before the frame's
+/// time passes, the sticky target's position after the frame (the driver moves it after the mover's quantum), ACE's
+/// state after it, and whether ACE's quantum threw and whether ACE's stick is still held.
+/// </summary>
+internal readonly record struct PositionFrame(
+    Position? InterpolateTo,
+    uint StickTo,
+    Position? Target,
+    Vector3 Origin,
+    uint Cell,
+    float Heading,
+    bool AceThrew,
+    bool AceStuck);
+
+/// <summary>A position managers' parity file read (format "ace-manager-parity", files sticky* and interpolate*).</summary>
+internal sealed record PositionManagerParityFile(
+    string Name,
+    PhysicsWorld World,
+    MoverDescription Mover,
+    MotionTable Table,
+    RetailSkills Skills,
+    MoverState Start,
+    Position TargetStart,
+    double FrameSeconds,
+    PositionFrame[] Frames);
+
+/// <summary>
+/// Reads the position managers' files of the manager parity data (StickyManager and InterpolationManager recorded
+/// quantum by quantum; described in the reference data's README): the calls from the frames' recorded events
+/// ("@InterpolateTo(x, y, z)", "PhysicsObj.stick_to_object(id)"), the target from the frames' first other object.
+/// A y of 192 m or more is the north landblock 0xA9B5 (the 150 m update). Errors name the JSON path. Load-time only.
+/// </summary>
+internal static class PositionManagerParityReader
+{
+    // The reference data's world for these files: flat landblocks 0xA9B4 and its north neighbour, the door slab and
+    // the platform (the files' tree stands far from the compared paths, as in the MoveTo files).
+    private const string WorldScene = """
+        {
+          "version": 1,
+          "name": "ace-managers position world",
+          "models": {
+            "doorSlab": { "box": { "min": [-0.5, -0.009, 0], "max": [0.5, 0.252, 2.2] } },
+            "platform": { "box": { "min": [-4, -4, 0], "max": [4, 4, 2] } }
+          },
+          "setups": {
+            "door": { "parts": [{ "model": "doorSlab" }] },
+            "platform": { "parts": [{ "model": "platform" }] },
+            "player": { "spheres": [{ "center": [0, 0, 0.475], "radius": 0.48 }, { "center": [0, 0, 1.35], "radius": 0.48 }], "stepUpHeight": 0.6, "stepDownHeight": 0.04 }
+          },
+          "landblocks": [{ "id": "0xA9B4", "height": 0 }, { "id": "0xA9B5", "height": 0 }],
+          "objects": [
+            { "id": "0x7000_0001", "setup": "door", "cell": "0xA9B40025", "position": [100, 100, 0], "state": "0x10001" },
+            { "id": "0x7000_0002", "setup": "platform", "cell": "0xA9B40017", "position": [60, 150, 0], "state": "0x10001" }
+          ],
+          "movers": [{ "name": "unused", "setup": "player", "state": ["Gravity"], "cell": "0xA9B40013", "position": [60, 60, 0], "floorZ": 0, "motion": [{ "offset": [0, 0, 0], "count": 1 }] }]
+        }
+        """;
+
+    private const uint Block = 0xA9B4, NorthBlock = 0xA9B5;
+
+    public static PositionManagerParityFile Read(JsonElement root, string name, string directory)
+    {
+        var o = new JsonObj(root, string.Empty);
+        var table = MotionParityReader.ReadTable(o, directory);
+        double rate = MotionParityReader.ReadRate(o);
+        var m = o.Obj("mover");
+        if (!m.String("setup").StartsWith("retail player", StringComparison.Ordinal))
+            throw new SceneFormatException(m.Child("setup"), "only the retail player setup is known.");
+        RetailSkills skills;
+        try
+        {
+            skills = new RetailSkills(m.Int("runSkill", -1), 0, 0f);
+        }
+        catch (ArgumentException ex)
+        {
+            throw SceneFormatException.Wrap("mover.runSkill", ex);
+        }
+        uint id = m.Has("id") ? m.Id("id") : 0x50000001u;
+        var mover = MoverDescription.Player(objectId: id, stepDownHeight: 0.04f);
+        var s = o.Obj("start");
+        var origin = s.Vec3("origin");
+        var start = MoverState.OnFloor(At(origin, s.Child("origin")), 0f);
+        var targetStart = new Position(0, Vector3.Zero);
+        foreach (var (value, at) in o.Array("objects", optional: true))
+        {
+            var other = new JsonObj(value, at);
+            if (other.String("role", null) == "target")
+                targetStart = At(other.Vec3("start"), other.Child("start"));
+        }
+        var items = o.Array("frames");
+        if (items.Count == 0 || items.Count > SceneLoader.MaxFramesPerMover)
+            throw new SceneFormatException("frames", $"needs 1 to {SceneLoader.MaxFramesPerMover} frames, got {items.Count}.");
+        var frames = new PositionFrame[items.Count];
+        for (int i = 0; i < frames.Length; i++)
+            frames[i] = ReadFrame(items[i].Value, items[i].Path);
+        var world = SceneLoader.Load(WorldScene, "ace-managers position world").World;
+        return new PositionManagerParityFile(name, world, mover, table, skills, start, targetStart, 1.0 / rate, frames);
+    }
+
+    private static PositionFrame ReadFrame(JsonElement e, string path)
+    {
+        var f = new JsonObj(e, path);
+        Position? interpolateTo = null;
+        uint stickTo = 0;
+        bool threw = false;
+        var c = CultureInfo.InvariantCulture;
+        foreach (var (value, at) in f.Array("commands"))
+        {
+            string text = JsonRead.String(value, at);
+            if (text.StartsWith("@InterpolateTo(", StringComparison.Ordinal))
+            {
+                int close = text.IndexOf(')');
+                var xyz = close < 0 ? [] : text["@InterpolateTo(".Length..close].Split(',', StringSplitOptions.TrimEntries);
+                if (xyz.Length != 3 || !float.TryParse(xyz[0], NumberStyles.Float, c, out float x) || !float.TryParse(xyz[1], NumberStyles.Float, c, out float y)
+                    || !float.TryParse(xyz[2], NumberStyles.Float, c, out float z) || !float.IsFinite(x) || !float.IsFinite(y) || !float.IsFinite(z))
+                    throw new SceneFormatException(at, $"unreadable position in \"{text}\".");
+                interpolateTo = At(new Vector3(x, y, z), at);
+            }
+            else if (text.StartsWith("PhysicsObj.stick_to_object(", StringComparison.Ordinal))
+            {
+                int close = text.IndexOf(')');
+                string arg = close < 0 ? "" : text["PhysicsObj.stick_to_object(".Length..close];
+                stickTo = arg.StartsWith("0x", StringComparison.Ordinal) && uint.TryParse(arg[2..], NumberStyles.AllowHexSpecifier, c, out uint v) && v != 0 ? v
+                    : throw new SceneFormatException(at, $"unreadable object id in \"{text}\".");
+            }
+            else if (text.Contains("UpdateObjectInternal threw", StringComparison.Ordinal))
+                threw = true;
+        }
+        Position? target = null;
+        var others = f.Array("others", optional: true);
+        if (others.Count > 0)
+        {
+            var other = new JsonObj(others[0].Value, others[0].Path);
+            target = new Position(other.Id("cell"), other.Vec3("origin"));
+        }
+        bool stuck = f.Opt("sticky") is { ValueKind: JsonValueKind.Object } st && new JsonObj(st, f.Child("sticky")).Id("targetID") != 0;
+        return new PositionFrame(interpolateTo, stickTo, target, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), threw, stuck);
+    }
+
+    // The recorded positions run on north across the landblock edge (y 192 m and more is 0xA9B5).
+    private static Position At(Vector3 p, string path)
+    {
+        if (!(p.X >= 0f && p.X < 192f && p.Y >= 0f && p.Y < 384f))
+            throw new SceneFormatException(path, $"{p} is outside landblocks 0xA9B4 and 0xA9B5.");
+        uint block = p.Y >= 192f ? NorthBlock : Block;
+        var local = p.Y >= 192f ? p with { Y = p.Y - 192f } : p;
+        return new Position(LandDefs.LandCellAt(block, local), local);
+    }
+}
