@@ -39,7 +39,7 @@ internal static class PlotCommand
         trajectory ??= SceneRunner.Run(scene);
         uint frameCell = scene.World.Cells.CellIds.FirstOrDefault();
         var paths = Paths(scene, trajectory, frameCell);
-        var (min, max) = Region(paths);
+        var (min, max) = Region(paths, Reports(scene, frameCell));
         bool alongX = MainAxisIsX(paths);
 
         var multiplot = new Multiplot();
@@ -51,6 +51,7 @@ internal static class PlotCommand
         int[] counts = DrawPaths(paths, top, side, alongX);
         var names = LabelPaths(paths, top, side, alongX);
         int ticks = DrawHeadings(paths, top);
+        int reports = DrawReports(scene, frameCell, top, side, alongX);
 
         top.Title($"{scene.Name}: top view");
         top.XLabel("x (m)");
@@ -68,7 +69,8 @@ internal static class PlotCommand
         top.ShowLegend();
         side.ShowLegend();
         multiplot.SavePng(outPath, 1600, 800);
-        string headings = ticks > 0 ? $"; {Program.Count(ticks, "heading tick")}" : string.Empty;
+        string headings = (ticks > 0 ? $"; {Program.Count(ticks, "heading tick")}" : string.Empty)
+            + (reports > 0 ? $"; {Program.Count(reports, "reported position")}" : string.Empty);
         stdout.WriteLine($"{scene.Name}: {Program.Count(paths.Count, "mover")}, {Program.Count(counts.Sum(), "frame")} ({Describe(counts)}){headings}; plot written to {outPath}");
         foreach (string name in names)
             stdout.WriteLine(Program.Printable($"  {name}"));
@@ -94,16 +96,15 @@ internal static class PlotCommand
     }
 
     /// <summary>The box around every path, 3 m of margin sideways and 1 m up and down (at least 0 to 4 m high).</summary>
-    private static (Vector3 Min, Vector3 Max) Region(List<MoverPath> paths)
+    private static (Vector3 Min, Vector3 Max) Region(List<MoverPath> paths, IEnumerable<Vector3> reports)
     {
         var min = new Vector3(float.MaxValue);
         var max = new Vector3(float.MinValue);
-        foreach (var p in paths)
-            foreach (var v in p.Points.Prepend(p.Start))
-            {
-                min = Vector3.Min(min, v);
-                max = Vector3.Max(max, v);
-            }
+        foreach (var v in paths.SelectMany(p => p.Points.Prepend(p.Start)).Concat(reports))
+        {
+            min = Vector3.Min(min, v);
+            max = Vector3.Max(max, v);
+        }
         if (min.X > max.X)
             return (new Vector3(0, 0, -1), new Vector3(10, 10, 4));
         min -= new Vector3(3, 3, 1);
@@ -320,6 +321,27 @@ internal static class PlotCommand
                 ticks++;
             }
         return ticks;
+    }
+
+    private static readonly Color ReportColor = Color.FromHex("#E377C2");
+
+    /// <summary>Every mover's reported positions (its interpolateTo commands) in the plot's frame.</summary>
+    private static IEnumerable<Vector3> Reports(Scene scene, uint frameCell) =>
+        scene.Movers.SelectMany(m => m.ReportedPositions).Select(p => p.Origin + LandDefs.BlockOffset(frameCell, p.CellId));
+
+    /// <summary>
+    /// The positions a server reported (the scene's interpolateTo commands) as open diamonds in both views, beside the
+    /// smoothed path the position manager made of them (issue 22 part 4); returns their count.
+    /// </summary>
+    private static int DrawReports(Scene scene, uint frameCell, Plot top, Plot side, bool alongX)
+    {
+        var points = Reports(scene, frameCell).ToArray();
+        if (points.Length == 0)
+            return 0;
+        var markers = top.Add.Markers(points.Select(v => (double)v.X).ToArray(), points.Select(v => (double)v.Y).ToArray(), MarkerShape.OpenDiamond, 9, ReportColor);
+        markers.LegendText = $"reported position, interpolateTo ({points.Length})";
+        side.Add.Markers(points.Select(v => (double)(alongX ? v.X : v.Y)).ToArray(), points.Select(v => (double)v.Z).ToArray(), MarkerShape.OpenDiamond, 9, ReportColor);
+        return points.Length;
     }
 
     /// <summary>The compass heading of a rotation: degrees clockwise from +Y (north) of its forward (+Y) axis, 0 to 360.</summary>

@@ -64,7 +64,23 @@ public sealed class SceneMover
         Path = path;
         _frameItemStarts = frameItemStarts;
         Commands = commands;
+        if (commands is not null)
+        {
+            var reported = new List<Position>();
+            foreach (var c in commands.Commands)
+                if (c.Kind == SceneCommandKind.InterpolateTo)
+                    reported.Add(c.Position);
+            _reported = reported.AsReadOnly();
+        }
     }
+
+    private readonly IReadOnlyList<Position> _reported = Array.Empty<Position>();
+
+    /// <summary>
+    /// The positions the mover's "interpolateTo" commands report (a server's updates that the position manager smooths
+    /// towards), in command order; empty for a mover without such commands. Read-only, for showing them beside the path.
+    /// </summary>
+    public IReadOnlyList<Position> ReportedPositions => _reported;
 
     /// <summary>A motion mover's table, skills and commands (its steps carry only the elapsed time); null otherwise.</summary>
     internal SceneMotion? Commands { get; }

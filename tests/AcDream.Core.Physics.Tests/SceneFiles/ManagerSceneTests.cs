@@ -30,6 +30,21 @@ public class ManagerSceneTests
     }
 
     [Fact]
+    public void ReportedPositions_AreTheInterpolateToCommands_InOrder_EmptyWithoutThem()
+    {
+        // The remote mover's 17 updates (remote-smoothing.json): the first at frame 0, the last 150 m north in 0xA9B5.
+        var scene = SceneLibrary.Load("remote-smoothing");
+        var remote = scene.Movers.First(m => m.Name == "remote").ReportedPositions;
+        Assert.Equal(17, remote.Count);
+        Assert.Equal(new Vector3(100.06f, 84.76f, 0f), remote[0].Origin);
+        Assert.Equal(new Vector3(100f, 101.5f, 0f), remote[15].Origin);
+        Assert.Equal(0xA9B5u, remote[16].CellId >> 16);
+        Assert.Equal(new Vector3(100f, 59.5f, 0f), remote[16].Origin);
+        Assert.Equal(37, scene.Movers.Sum(m => m.ReportedPositions.Count));
+        Assert.Empty(SceneLibrary.Load("run-turn").Movers[0].ReportedPositions);
+    }
+
+    [Fact]
     public void StickyMelee_KeepsThe30cmGap_UntilTheLastStickTimesOut()
     {
         var run = SceneRunner.Run(SceneLibrary.Load("sticky-melee"));

@@ -63,6 +63,9 @@ public class QueryToolTests
             Assert.Equal(0, code);
             Assert.Contains("; 96 heading ticks; plot written to", output);
             Assert.DoesNotContain("heading ticks", Run("plot", "jump", "--out", png).Out); // body movers without a motion table have none
+            Assert.DoesNotContain("reported position", output); // no interpolateTo commands
+            // remote-smoothing's 37 interpolateTo commands (17 + 10 + 10 in the scene file) are drawn beside the paths.
+            Assert.Contains("; 37 reported positions; plot written to", Run("plot", "remote-smoothing", "--out", png).Out);
         }
         finally
         {
