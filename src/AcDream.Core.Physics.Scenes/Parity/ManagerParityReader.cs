@@ -64,19 +64,7 @@ internal static class ManagerParityReader
         var table = MotionParityReader.ReadTable(o, directory);
         double rate = MotionParityReader.ReadRate(o);
         var m = o.Obj("mover");
-        if (!m.String("setup").StartsWith("retail player", StringComparison.Ordinal))
-            throw new SceneFormatException(m.Child("setup"), "only the retail player setup is known.");
-        if (m.Id("motionTable") != table.Id)
-            throw new SceneFormatException(m.Child("motionTable"), $"names 0x{m.Id("motionTable"):X8}, but the table file is 0x{table.Id:X8}.");
-        RetailSkills skills;
-        try
-        {
-            skills = new RetailSkills(m.Int("runSkill", -1), 0, 0f);
-        }
-        catch (ArgumentException ex)
-        {
-            throw SceneFormatException.Wrap("mover.runSkill", ex);
-        }
+        var skills = RetailPlayerSkills(m, table);
         // The retail player (its spheres, step heights 0.6 and 0.04), Gravity as the README's mover.
         var mover = MoverDescription.Player().With(physicsState: PhysicsState.Gravity | PhysicsState.EdgeSlide);
         var s = o.Obj("start");
@@ -100,6 +88,23 @@ internal static class ManagerParityReader
             previousOrigin = frames[i].Origin;
         }
         return new ManagerParityFile(name, o.String("description", string.Empty) ?? string.Empty, world, mover, table, skills, start, 1.0 / rate, frames);
+    }
+
+    /// <summary>The file's mover, which must be the retail player with the file's table: its Run skill.</summary>
+    internal static RetailSkills RetailPlayerSkills(JsonObj m, MotionTable table)
+    {
+        if (!m.String("setup").StartsWith("retail player", StringComparison.Ordinal))
+            throw new SceneFormatException(m.Child("setup"), "only the retail player setup is known.");
+        if (m.Id("motionTable") != table.Id)
+            throw new SceneFormatException(m.Child("motionTable"), $"names 0x{m.Id("motionTable"):X8}, but the table file is 0x{table.Id:X8}.");
+        try
+        {
+            return new RetailSkills(m.Int("runSkill", -1), 0, 0f);
+        }
+        catch (ArgumentException ex)
+        {
+            throw SceneFormatException.Wrap("mover.runSkill", ex);
+        }
     }
 
     private static ManagerFrame ReadFrame(JsonElement e, string path, Vector3 before, ref double lastUpdate)

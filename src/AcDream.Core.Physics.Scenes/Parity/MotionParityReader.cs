@@ -237,8 +237,9 @@ internal static class MotionParityReader
             ? v
             : throw new SceneFormatException(path, $"expected a hex motion id in \"{text}\".");
 
-    // The world every motion parity file names (its "world" object describes it in words): flat landblock 0xA9B4,
-    // the door slab box and the platform box, both static (a scene needs a mover; this one is not used).
+    // The world every motion and manager parity file names (its "world" object describes it in words): flat landblock
+    // 0xA9B4 and its north neighbour 0xA9B5 (the interpolate files' 150 m update), the door slab box and the platform
+    // box, both static (a scene needs a mover; this one is not used).
     private const string WorldScene = """
         {
           "version": 1,
@@ -252,17 +253,17 @@ internal static class MotionParityReader
             "platform": { "parts": [{ "model": "platform" }] },
             "player": { "spheres": [{ "center": [0, 0, 0.475], "radius": 0.48 }, { "center": [0, 0, 1.35], "radius": 0.48 }], "stepUpHeight": 0.6, "stepDownHeight": 0.04 }
           },
-          "landblocks": [{ "id": "0xA9B4", "height": 0 }],
+          "landblocks": [{ "id": "0xA9B4", "height": 0 }, { "id": "0xA9B5", "height": 0 }],
           "objects": [
-            { "id": "0x7000_0001", "setup": "door", "position": [100, 100, 0], "state": "0x10001" },
-            { "id": "0x7000_0002", "setup": "platform", "position": [60, 150, 0], "state": "0x10001" }
+            { "id": "0x7000_0001", "setup": "door", "cell": "0xA9B40025", "position": [100, 100, 0], "state": "0x10001" },
+            { "id": "0x7000_0002", "setup": "platform", "cell": "0xA9B40017", "position": [60, 150, 0], "state": "0x10001" }
           ],
-          "movers": [{ "name": "unused", "setup": "player", "state": ["Gravity"], "position": [60, 60, 0], "floorZ": 0, "motion": [{ "offset": [0, 0, 0], "count": 1 }] }]
+          "movers": [{ "name": "unused", "setup": "player", "state": ["Gravity"], "cell": "0xA9B40013", "position": [60, 60, 0], "floorZ": 0, "motion": [{ "offset": [0, 0, 0], "count": 1 }] }]
         }
         """;
 
     private static PhysicsWorld World() => SceneLoader.Load(WorldScene, "ace-motion world").World;
 
-    /// <summary>The same world for the manager parity files (ManagerParityReader); the tree they list stands far from the compared paths.</summary>
+    /// <summary>The same world for the manager parity files (ManagerParityReader, PositionManagerParityReader); the tree they list stands far from the compared paths.</summary>
     internal static PhysicsWorld SharedWorld() => World();
 }

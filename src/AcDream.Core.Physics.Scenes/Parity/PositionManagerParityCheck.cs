@@ -155,7 +155,8 @@ internal static class PositionManagerParityCheck
     {
         var c = CultureInfo.InvariantCulture;
         int from = Array.FindIndex(file.Frames, x => x.AceThrew);
-        if (from < 0)
+        // Without a throw, or one before any update (no failed node to blip to), every frame is compared with ACE.
+        if (from < 1 || !Array.Exists(file.Frames[..from], x => x.InterpolateTo is not null))
         {
             var all = Compare(file, ours, 0, file.Frames.Length - 1);
             return Report(file, all, (all.First is null ? Ok : "compared") + "; " + Counts(all.Frames, all.Within, all.Max, all.Mismatches));
@@ -189,13 +190,13 @@ internal static class PositionManagerParityCheck
         for (int f = 1; f < n; f++)
         {
             double d = MotionParityCheck.Distance(file.Frames[f].Origin, file.Frames[f - 1].Origin);
-            if (d > 0.1)
+            if (d > 0.1 && OnAReport(file, file.Frames[f].Origin))
             {
                 aceJumps++;
                 if (firstJump < 0) firstJump = f;
                 lastJump = f;
             }
-            else if (d > 1e-4) aceMoving++;
+            else if (d > 1e-4) aceMoving++; // any other move, smooth or a jump elsewhere
         }
         // Ours: the largest step of the smoothing (a step over 2 m is a blip), the stop at the door (before the first blip).
         double smooth = 0, doorY = 0;
@@ -234,12 +235,17 @@ internal static class PositionManagerParityCheck
         }
         var end = ours.Origins[^1];
         string verdict = string.Format(c,
-            "departs (nothing compared): ACE as shipped never moves by interpolation (adjust_offset's `frame = offset;` is a no-op; Position.Subtract mutates the head node): its object jumps onto a reported point {0} times in {1} frames (frames {2}, {3}, ..., {4}; {5} other frames move) and its UseTime throws from frame {6}, so it never reaches the 150 m update; "
+            "departs (nothing compared): ACE as shipped never moves by interpolation (adjust_offset's `frame = offset;` is a no-op; Position.Subtract mutates the head node): its object jumps onto a reported point {0} times in {1} frames (frames {2}, {3}, ..., {4}; {5} other frames move at all) and its UseTime throws from frame {6}, so it never reaches the 150 m update; "
             + "ours (retail's adjust_offset) moves through the transition (at most {7:0.###} m a quantum, 2 x get_adjusted_max_speed), comes within {8} m of {9} of the {10} reported points before the next one (counting the blips), stops at the door at y {11:0.##}, blips {12} times (frames {13}: the failed node behind the door, then the 150 m update) and ends at 0x{14:X8} {15}, as interpolate-applied-offset shows",
             aceJumps, n, firstJump, firstJump + (lastJump - firstJump) / Math.Max(1, aceJumps - 1), lastJump, aceMoving, aceThrew,
             smooth, ReachedDistance.ToString(c), reached, reports, doorY, blips, blipFrames, ours.Cells[^1], Xy(end));
         return new ParityReport(file.Name, false, 1, 0, 0, 0, 0, 0, null) { Verdict = verdict };
     }
+
+    /// <summary>ACE's position is one of the reported points (horizontally within <see cref="Tolerance"/>: placement settles it 0.005 m up).</summary>
+    private static bool OnAReport(PositionManagerParityFile file, Vector3 origin) =>
+        Array.Exists(file.Frames, x => x.InterpolateTo is { } p
+            && Vector2.Distance(new(p.Frame.Origin.X, p.Frame.Origin.Y), new(origin.X, origin.Y)) <= Tolerance);
 
     private static string Xy(Vector3 v) => string.Format(CultureInfo.InvariantCulture, "({0:0.###}, {1:0.###})", v.X, v.Y);
 }

@@ -43,30 +43,6 @@ internal sealed record PositionManagerParityFile(
 /// </summary>
 internal static class PositionManagerParityReader
 {
-    // The reference data's world for these files: flat landblocks 0xA9B4 and its north neighbour, the door slab and
-    // the platform (the files' tree stands far from the compared paths, as in the MoveTo files).
-    private const string WorldScene = """
-        {
-          "version": 1,
-          "name": "ace-managers position world",
-          "models": {
-            "doorSlab": { "box": { "min": [-0.5, -0.009, 0], "max": [0.5, 0.252, 2.2] } },
-            "platform": { "box": { "min": [-4, -4, 0], "max": [4, 4, 2] } }
-          },
-          "setups": {
-            "door": { "parts": [{ "model": "doorSlab" }] },
-            "platform": { "parts": [{ "model": "platform" }] },
-            "player": { "spheres": [{ "center": [0, 0, 0.475], "radius": 0.48 }, { "center": [0, 0, 1.35], "radius": 0.48 }], "stepUpHeight": 0.6, "stepDownHeight": 0.04 }
-          },
-          "landblocks": [{ "id": "0xA9B4", "height": 0 }, { "id": "0xA9B5", "height": 0 }],
-          "objects": [
-            { "id": "0x7000_0001", "setup": "door", "cell": "0xA9B40025", "position": [100, 100, 0], "state": "0x10001" },
-            { "id": "0x7000_0002", "setup": "platform", "cell": "0xA9B40017", "position": [60, 150, 0], "state": "0x10001" }
-          ],
-          "movers": [{ "name": "unused", "setup": "player", "state": ["Gravity"], "cell": "0xA9B40013", "position": [60, 60, 0], "floorZ": 0, "motion": [{ "offset": [0, 0, 0], "count": 1 }] }]
-        }
-        """;
-
     private const uint Block = 0xA9B4, NorthBlock = 0xA9B5;
 
     public static PositionManagerParityFile Read(JsonElement root, string name, string directory)
@@ -75,17 +51,7 @@ internal static class PositionManagerParityReader
         var table = MotionParityReader.ReadTable(o, directory);
         double rate = MotionParityReader.ReadRate(o);
         var m = o.Obj("mover");
-        if (!m.String("setup").StartsWith("retail player", StringComparison.Ordinal))
-            throw new SceneFormatException(m.Child("setup"), "only the retail player setup is known.");
-        RetailSkills skills;
-        try
-        {
-            skills = new RetailSkills(m.Int("runSkill", -1), 0, 0f);
-        }
-        catch (ArgumentException ex)
-        {
-            throw SceneFormatException.Wrap("mover.runSkill", ex);
-        }
+        var skills = ManagerParityReader.RetailPlayerSkills(m, table);
         uint id = m.Has("id") ? m.Id("id") : 0x50000001u;
         var mover = MoverDescription.Player(objectId: id, stepDownHeight: 0.04f);
         var s = o.Obj("start");
@@ -104,7 +70,9 @@ internal static class PositionManagerParityReader
         var frames = new PositionFrame[items.Count];
         for (int i = 0; i < frames.Length; i++)
             frames[i] = ReadFrame(items[i].Value, items[i].Path);
-        var world = SceneLoader.Load(WorldScene, "ace-managers position world").World;
+        if (targetStart.CellId == 0 && Array.Exists(frames, x => x.StickTo != 0))
+            throw new SceneFormatException("objects", "a stick_to_object needs an object with the role \"target\" (its start).");
+        var world = MotionParityReader.SharedWorld();
         return new PositionManagerParityFile(name, world, mover, table, skills, start, targetStart, 1.0 / rate, frames);
     }
 

@@ -1,4 +1,7 @@
 using System.IO;
+using System.IO.Compression;
+using System.Text.Json.Nodes;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Tests.Parity;
 
@@ -89,5 +92,38 @@ public class SharedManagerParityTests
         Assert.Contains("stops at the door at y 99.43", line);
         Assert.Contains("blips 2 times (frames 104 and 120", line);
         Assert.Contains("ends at 0xA9B50023 (100, 59.5)", line);
+    }
+
+    [Theory]
+    [InlineData("sticky", "objects", "role")]
+    [InlineData("interpolate", "frames[0].commands[0]", "unreadable position")]
+    public void APositionManagersFileWithBadInput_IsAClearErrorNamingThePath(string name, string path, string message)
+    {
+        // A copy of the recording in a scratch folder (beside its table), broken in one place: the sticky target's
+        // object left out, or the first InterpolateTo's position made unreadable.
+        string shared = SharedFolders.Find("ace-managers")!;
+        string dir = Path.Combine(Path.GetTempPath(), $"acdream-{Guid.NewGuid():N}");
+        Directory.CreateDirectory(dir);
+        try
+        {
+            File.Copy(Path.Combine(shared, "table.json"), Path.Combine(dir, "table.json"));
+            JsonNode root;
+            using (var gz = new GZipStream(File.OpenRead(Path.Combine(shared, name + ".json.gz")), CompressionMode.Decompress))
+                root = JsonNode.Parse(gz)!;
+            if (name == "sticky")
+                root["objects"] = new JsonArray();
+            else
+                root["frames"]![0]!["commands"]![0] = "@InterpolateTo(99.9, north, 0) heading 0";
+            string file = Path.Combine(dir, name + ".json.gz");
+            using (var gz = new GZipStream(File.Create(file), CompressionLevel.Fastest))
+                gz.Write(System.Text.Encoding.UTF8.GetBytes(root.ToJsonString()));
+            var ex = Assert.Throws<SceneFormatException>(() => ParityCheck.CheckFile(file));
+            Assert.Contains(path, ex.Message);
+            Assert.Contains(message, ex.Message);
+        }
+        finally
+        {
+            Directory.Delete(dir, recursive: true);
+        }
     }
 }
