@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Managers;
 
@@ -86,11 +87,11 @@ internal sealed class StickyManager
         if (step >= MathF.Abs(gap))
             step = gap; // the whole gap (negative: backs away to it)
         offset.Origin = new Vector3(way.X * step, way.Y * step, way.Z * step);
-        float turn = Compass.Between(me, target) - Compass.Of(me.Frame);
+        float turn = Headings.ManagersForm.Towards(me, target) - Headings.ManagersForm.Of(me.Frame);
         if (MathF.Abs(turn) < PhysicsConstants.Epsilon)
             turn = 0f;
         if (-PhysicsConstants.Epsilon > turn)
             turn += 360f;
-        Compass.Set(ref offset, turn);
+        offset.Orientation = Headings.ManagersForm.Yaw(turn);
     }
 }
