@@ -111,12 +111,8 @@ public static class Headings
         return reach > 0f ? (float)Math.Sqrt(gap * gap + (double)reach * reach) : (float)gap;
     }
 
-    /// <summary>Position::distance: the distance between the positions' origins (across landblocks).</summary>
-    internal static float Distance(in Position a, in Position b)
-    {
-        var o = a.GetOffset(b);
-        return (float)Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z);
-    }
+    /// <summary>Position::distance: the distance between the positions' origins (across landblocks), as a float (one formula: <see cref="Managers.Distances.Between"/>).</summary>
+    internal static float Distance(in Position a, in Position b) => (float)Managers.Distances.Between(a, b);
 
     /// <summary>
     /// The position managers' form of the same three functions (StickyManager, InterpolationManager, PositionManager).
