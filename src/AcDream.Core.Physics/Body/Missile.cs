@@ -98,8 +98,8 @@ public sealed class Missile
     /// <param name="radius">Its sphere's radius, metres, more than 0.</param>
     /// <param name="start">The launch position.</param>
     /// <param name="velocity">The launch velocity, landblock axes, m/s.</param>
-    /// <param name="targetId">The object it is aimed at (it passes every other creature), or 0.</param>
-    /// <param name="gravity">Whether it falls.</param>
+    /// <param name="targetId">The object it is aimed at (it passes every other creature), or 0 (the default: no target).</param>
+    /// <param name="gravity">Whether it falls (default true, an arrow's or a bolt's flight).</param>
     /// <exception cref="ArgumentException">A bad radius, frame or velocity, named in the message.</exception>
     public static Missile Launch(uint objectId, float radius, Position start, Vector3 velocity, uint targetId = 0, bool gravity = true)
     {

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Managers;
 
@@ -72,7 +73,7 @@ internal sealed class InterpolationManager
             {
                 if (!keepHeading)
                 {
-                    setHeading = Compass.Of(p.Frame);
+                    setHeading = Headings.ManagersForm.Of(p.Frame);
                     StopInterpolating();
                     return true;
                 }
@@ -150,7 +151,7 @@ internal sealed class InterpolationManager
         if (distance > step)
             adjustment.Origin *= step / distance;
         if (_keepHeading)
-            Compass.Set(ref adjustment, 0f);
+            adjustment.Orientation = Headings.ManagersForm.Yaw(0f);
         offset = adjustment;
     }
 
@@ -202,7 +203,7 @@ internal sealed class InterpolationManager
     {
         var node = p;
         if (_keepHeading)
-            Compass.Set(ref node.Frame, Compass.Of(obj.Position.Frame));
+            node.Frame.Orientation = Headings.ManagersForm.Yaw(Headings.ManagersForm.Of(obj.Position.Frame));
         _queue[(_head + _count) % MaxNodes] = node;
         _count++;
     }

@@ -27,11 +27,16 @@ namespace AcDream.Core.Physics.Managers;
 public sealed class PositionManager
 {
     private readonly MotionInterpreter _interp;
+    private readonly ObjectMotion _owner;
     private InterpolationManager? _interpolation;
     private StickyManager? _sticky;
     private ConstraintManager? _constraint;
 
-    internal PositionManager(MotionInterpreter interp) => _interp = interp;
+    internal PositionManager(MotionInterpreter interp, ObjectMotion owner)
+    {
+        _interp = interp;
+        _owner = owner;
+    }
 
     /// <summary>
     /// The managers' clock, seconds: the sum of the quanta stepped (retail reads Timer::cur_time; only the
@@ -67,7 +72,7 @@ public sealed class PositionManager
         var p = CheckedPosition(position, nameof(position));
         _interpolation ??= new InterpolationManager();
         if (_interpolation.InterpolateTo(p, keepHeading, View(mover, state), out float heading))
-            Compass.Set(ref state.Position.Frame, heading);
+            state.Position.Frame.Orientation = Headings.ManagersForm.Yaw(heading);
     }
 
     /// <summary>CPhysicsObj::StopInterpolating: the queue is emptied and the progress state reset.</summary>
@@ -91,8 +96,10 @@ public sealed class PositionManager
     /// <summary>
     /// CPhysicsObj::stick_to_object / PositionManager::StickTo: keeps the object 0.3 m from the target's cylinder and
     /// facing it, from the target's first <see cref="UpdateTarget"/> on, for 1 s of <see cref="Clock"/>. A running
-    /// stick ends first. Retail sets the timeout only here (StickyManager::StickTo): target updates do not extend
-    /// it, and sticking again restarts it.
+    /// stick ends first (and, as every end of a stick in retail, cancels the object's MoveTo if one is on: the 1 s
+    /// timeout, <see cref="LoseTarget"/> and <see cref="UnStick"/> do too). Retail sets the timeout only here
+    /// (StickyManager::StickTo): target updates do not extend it, and sticking again restarts it. A MoveTo with
+    /// <see cref="MoveToFlags.Sticky"/> sticks here itself on arrival.
     /// </summary>
     /// <param name="targetId">The target's object id, not 0 and not the object's own.</param>
     /// <param name="targetRadius">The target's radius, m (retail: its part array's radius).</param>
@@ -108,12 +115,32 @@ public sealed class PositionManager
             throw new ArgumentException($"targetId: 0x{targetId:X8} is the object itself.", nameof(targetId));
         Guard.Extent(targetRadius, true, nameof(targetRadius));
         Guard.Extent(targetHeight, true, nameof(targetHeight));
-        _sticky ??= new StickyManager();
-        _sticky.StickTo(targetId, targetRadius, Clock);
+        StickToChecked(targetId, targetRadius);
     }
 
-    /// <summary>CPhysicsObj::unstick_from_object: ends the stick.</summary>
-    public void UnStick() => _sticky?.Clear();
+    // PositionManager::StickTo after the checks; also MoveToManager::BeginNextNode's arrival with the Sticky flag.
+    internal void StickToChecked(uint targetId, float targetRadius)
+    {
+        _sticky ??= new StickyManager();
+        if (_sticky.StickTo(targetId, targetRadius, Clock))
+            StickEnded();
+    }
+
+    /// <summary>
+    /// CPhysicsObj::unstick_from_object (PositionManager::UnStick → StickyManager::HandleExitWorld): ends the stick,
+    /// and a running stick's end cancels the object's MoveTo (<see cref="MoveToError.ActionCancelled"/>), as every
+    /// end of a stick does in retail.
+    /// </summary>
+    public void UnStick()
+    {
+        if (_sticky is not null && _sticky.End())
+            StickEnded();
+    }
+
+    // Every end of a running stick in retail (StickTo over a stick, HandleUpdateTarget with another status than Ok,
+    // UseTime's timeout, HandleExitWorld) calls clear_target and then CPhysicsObj::cancel_moveto
+    // (CStickyManager.c:388501-388710): the object's MoveTo, if one is on, ends with ActionCancelled (0x36).
+    private void StickEnded() => _owner.CancelMoveToForStick();
 
     /// <summary>The target stuck to, 0 when none (PositionManager::GetStickyObjectID).</summary>
     public uint StickyTargetId => _sticky?.TargetId ?? 0;
@@ -132,16 +159,21 @@ public sealed class PositionManager
     public void UpdateTarget(uint targetId, in Position position)
     {
         var p = CheckedPosition(position, nameof(position));
-        _sticky?.HandleUpdateTarget(targetId, TargetStatus.Ok, p);
+        if (_sticky is not null && _sticky.HandleUpdateTarget(targetId, TargetStatus.Ok, p))
+            StickEnded();
     }
 
-    /// <summary>A target update with another status than Ok (the target left the world, teleported, timed out …): the stick to it ends.</summary>
+    /// <summary>
+    /// A target update with another status than Ok (the target left the world, teleported, timed out …): the stick to
+    /// it ends, and with it the object's MoveTo if one is on (retail's cancel_moveto, <see cref="MoveToError.ActionCancelled"/>).
+    /// </summary>
     /// <exception cref="ArgumentException">Status Ok (use <see cref="UpdateTarget"/>) or not a defined status.</exception>
     public void LoseTarget(uint targetId, TargetStatus status)
     {
         if (status == TargetStatus.Ok || !Enum.IsDefined(status))
             throw new ArgumentException($"status: must be a defined status other than Ok, got {status}.", nameof(status));
-        _sticky?.HandleUpdateTarget(targetId, status, default);
+        if (_sticky is not null && _sticky.HandleUpdateTarget(targetId, status, default))
+            StickEnded();
     }
 
     // ---- constraint ----
@@ -202,7 +234,8 @@ public sealed class PositionManager
         Clock += quantum;
         blipTarget = default;
         bool blip = _interpolation is not null && _interpolation.BlipTarget(out blipTarget);
-        _sticky?.UseTime(Clock);
+        if (_sticky is not null && _sticky.UseTime(Clock))
+            StickEnded();
         return blip;
     }
 

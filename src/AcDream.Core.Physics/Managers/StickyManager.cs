@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Managers;
 
@@ -27,44 +28,53 @@ internal sealed class StickyManager
     public double TimeoutTime { get; private set; }
     public Position TargetPosition { get; private set; }
 
-    /// <summary>StickyManager::StickTo (CStickyManager.c:388664): a running stick ends first; the target's position is awaited.</summary>
-    public void StickTo(uint targetId, float targetRadius, double now)
+    /// <summary>
+    /// StickyManager::StickTo (CStickyManager.c:388664): a running stick ends first (true: the owner cancels the
+    /// MoveTo, as retail's cancel_moveto there); the target's position is awaited.
+    /// </summary>
+    public bool StickTo(uint targetId, float targetRadius, double now)
     {
-        Clear();
+        bool ended = End();
         TargetRadius = targetRadius;
         TargetId = targetId;
         Initialized = false;
         TimeoutTime = now + StickyTime;
+        return ended;
     }
 
-    /// <summary>StickyManager::HandleUpdateTarget (CStickyManager.c:388690): an Ok update stores the position; any other status ends the stick.</summary>
-    public void HandleUpdateTarget(uint targetId, TargetStatus status, in Position position)
+    /// <summary>
+    /// StickyManager::HandleUpdateTarget (CStickyManager.c:388690): an Ok update stores the position; any other status
+    /// ends the stick (true: the owner cancels the MoveTo).
+    /// </summary>
+    public bool HandleUpdateTarget(uint targetId, TargetStatus status, in Position position)
     {
         if (targetId != TargetId)
-            return;
-        if (status == TargetStatus.Ok)
-        {
-            Initialized = true;
-            TargetPosition = position;
-        }
-        else
-        {
-            Clear();
-        }
+            return false;
+        if (status != TargetStatus.Ok)
+            return End();
+        Initialized = true;
+        TargetPosition = position;
+        return false;
     }
 
-    /// <summary>StickyManager::UseTime (CStickyManager.c:388604): the stick ends once the clock passes the timeout.</summary>
-    public void UseTime(double now)
-    {
-        if (TargetId != 0 && now > TimeoutTime)
-            Clear();
-    }
+    /// <summary>
+    /// StickyManager::UseTime (CStickyManager.c:388604): the stick ends once the clock passes the timeout (true: the
+    /// owner cancels the MoveTo).
+    /// </summary>
+    public bool UseTime(double now) => TargetId != 0 && now > TimeoutTime && End();
 
-    /// <summary>StickyManager::HandleExitWorld, and the clearing inside StickTo, UseTime and HandleUpdateTarget.</summary>
-    public void Clear()
+    /// <summary>
+    /// StickyManager::HandleExitWorld (CStickyManager.c:388501), and the same clearing inside StickTo, UseTime and
+    /// HandleUpdateTarget: a running stick ends. Returns whether one was running; retail then calls clear_target and
+    /// CPhysicsObj::cancel_moveto, which the owner does (<see cref="PositionManager"/>).
+    /// </summary>
+    public bool End()
     {
+        if (TargetId == 0)
+            return false;
         TargetId = 0;
         Initialized = false;
+        return true;
     }
 
     /// <summary>StickyManager::adjust_offset (CStickyManager.c:388518).</summary>
@@ -86,11 +96,11 @@ internal sealed class StickyManager
         if (step >= MathF.Abs(gap))
             step = gap; // the whole gap (negative: backs away to it)
         offset.Origin = new Vector3(way.X * step, way.Y * step, way.Z * step);
-        float turn = Compass.Between(me, target) - Compass.Of(me.Frame);
+        float turn = Headings.ManagersForm.Towards(me, target) - Headings.ManagersForm.Of(me.Frame);
         if (MathF.Abs(turn) < PhysicsConstants.Epsilon)
             turn = 0f;
         if (-PhysicsConstants.Epsilon > turn)
             turn += 360f;
-        Compass.Set(ref offset, turn);
+        offset.Orientation = Headings.ManagersForm.Yaw(turn);
     }
 }

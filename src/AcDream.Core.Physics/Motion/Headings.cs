@@ -17,14 +17,27 @@ public static class Headings
     private const double RadiansPerDegree = 0.0174532925199433;
 
     /// <summary>The heading of a horizontal direction (x, y): fmod(450 − atan2(y, x) in degrees, 360).</summary>
-    private static double OfDirection(double x, double y) =>
-        (450.0 - PortableMath.Atan2(y, x) * DegreesPerRadian) % 360.0;
+    private static double OfDirection(double x, double y) => FromAtan2(PortableMath.Atan2(y, x));
+
+    // fmod(450 − angle in degrees, 360): angle is atan2's, in [−π, π], so the result is never negative.
+    private static double FromAtan2(double radians) => (450.0 - radians * DegreesPerRadian) % 360.0;
+
+    // Frame::get_heading's vector: where the frame's local +Y points.
+    private static Vector3 Forward(in Frame frame) => frame.LocalToGlobalVec(Vector3.UnitY);
+
+    // Position::heading's offset on the ground plane and its length; false when shorter than EPSILON (normalize_check_small).
+    private static bool Horizontal(in Position from, in Position to, out Vector3 d, out double length)
+    {
+        d = from.GetOffset(to);
+        length = Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y);
+        return !(length < PhysicsConstants.Epsilon);
+    }
 
     /// <summary>Frame::get_heading: the heading the frame's +Y axis points at, compass degrees in [0, 360).</summary>
     /// <param name="frame">The frame (a position's orientation).</param>
     public static float Of(in Frame frame)
     {
-        var forward = frame.LocalToGlobalVec(Vector3.UnitY);
+        var forward = Forward(frame);
         return (float)OfDirection(forward.X, forward.Y);
     }
 
@@ -36,9 +49,7 @@ public static class Headings
     /// <param name="to">Where to.</param>
     public static float Towards(in Position from, in Position to)
     {
-        var d = from.GetOffset(to);
-        double length = Math.Sqrt((double)d.X * d.X + (double)d.Y * d.Y);
-        if (length < PhysicsConstants.Epsilon)
+        if (!Horizontal(from, to, out var d, out double length))
             return 0f;
         float inv = (float)(1.0 / length);
         return (float)OfDirection(d.X * inv, d.Y * inv);
@@ -111,10 +122,42 @@ public static class Headings
         return reach > 0f ? (float)Math.Sqrt(gap * gap + (double)reach * reach) : (float)gap;
     }
 
-    /// <summary>Position::distance: the distance between the positions' origins (across landblocks).</summary>
-    internal static float Distance(in Position a, in Position b)
+    /// <summary>Position::distance: the distance between the positions' origins (across landblocks), as a float (one formula: <see cref="Managers.Distances.Between"/>).</summary>
+    internal static float Distance(in Position a, in Position b) => (float)Managers.Distances.Between(a, b);
+
+    /// <summary>
+    /// The position managers' form of the same three functions (StickyManager, InterpolationManager, PositionManager).
+    /// They compute the same headings and turns but round differently in the last bit: atan2 is rounded to float
+    /// before the degrees, a direction is normalized by division in double, and set_heading takes the half angle
+    /// directly instead of going through the direction and back. The managers' recorded data (the sticky-melee
+    /// and remote-smoothing hashes) were made with this form; moving the managers to the functions above changes
+    /// sticky-melee at frame 11 by about 1e-7 in a rotation component, so the switch waits for a re-recording.
+    /// </summary>
+    internal static class ManagersForm
     {
-        var o = a.GetOffset(b);
-        return (float)Math.Sqrt((double)o.X * o.X + (double)o.Y * o.Y + (double)o.Z * o.Z);
+        // atan2 taken in float (PortableMath's float overload), then the same degrees.
+        private static double OfDirection(float x, float y) => FromAtan2(PortableMath.Atan2(y, x));
+
+        /// <summary>Frame::get_heading (see <see cref="Headings.Of(in Frame)"/>), atan2 rounded to float.</summary>
+        public static float Of(in Frame frame)
+        {
+            var forward = Forward(frame);
+            return (float)OfDirection(forward.X, forward.Y);
+        }
+
+        /// <summary>Position::heading (see <see cref="Headings.Towards"/>), the direction divided by its length in double.</summary>
+        public static float Towards(in Position from, in Position to)
+        {
+            if (!Horizontal(from, to, out var d, out double length))
+                return 0f;
+            return (float)OfDirection((float)(d.X / length), (float)(d.Y / length));
+        }
+
+        /// <summary>Frame::set_heading for an upright frame (see <see cref="Headings.Facing"/>): a turn of −degrees about Z.</summary>
+        public static Quaternion Yaw(float degrees)
+        {
+            double half = -degrees * RadiansPerDegree * 0.5;
+            return new Quaternion(0f, 0f, (float)PortableMath.Sin(half), (float)PortableMath.Cos(half));
+        }
     }
 }

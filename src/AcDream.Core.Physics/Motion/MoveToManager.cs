@@ -71,6 +71,8 @@ internal sealed class MoveToManager
     /// <summary>The object an arrival with <see cref="MoveToFlags.Sticky"/> asked to stick to (PositionManager::StickTo), 0 when none.</summary>
     public uint StickTarget;
     public float StickRadius, StickHeight;
+    /// <summary>An arrival has asked to stick and the owner has not yet passed it to PositionManager::StickTo.</summary>
+    public bool StickPending;
 
     // The body of the call in progress.
     private BodyView _body;
@@ -234,6 +236,12 @@ internal sealed class MoveToManager
     }
 
     /// <summary>
+    /// CPhysicsObj::cancel_moveto from the sticky manager (a stick ended): MovementManager::CancelMoveTo(0x36). The
+    /// cancel only stops the move's motions and clears its fields, so it reads no body view.
+    /// </summary>
+    public void CancelFromStick() => CancelMoveTo(MoveToError.ActionCancelled);
+
+    /// <summary>
     /// UseTime (acclient.c:346017), after a quantum's transition: with contact, and once the target is known, the head
     /// node's handler runs. Returns whether it set the heading (the caller copies <paramref name="body"/>'s orientation).
     /// </summary>
@@ -262,11 +270,12 @@ internal sealed class MoveToManager
     }
 
     // PerformMovement (acclient.c:346118): a new move cancels the one in progress (ActionCancelled) and starts from a
-    // clean slate (the sticky hand-off is the owner's: unstick_from_object).
+    // clean slate (its unstick_from_object is the owner's: ObjectMotion unsticks before each start).
     private void PerformMovement()
     {
         CancelMoveTo(MoveToError.ActionCancelled);
         StickTarget = 0;
+        StickPending = false;
     }
 
     private void Begin(ref BodyView body)
@@ -410,6 +419,7 @@ internal sealed class MoveToManager
             StickTarget = stickTo;
             StickRadius = radius;
             StickHeight = height;
+            StickPending = true;
         }
         EndWith(MoveToError.None);
     }

@@ -23,7 +23,11 @@ public enum MoveToFlags : uint
     FailWalk = 0x20,
     /// <summary>Turn to <see cref="MoveToParameters.DesiredHeading"/> after arriving (relative to the target's heading for an object).</summary>
     UseFinalHeading = 0x40,
-    /// <summary>Stick to the object on arrival (retail hands it to the PositionManager's StickTo; see <see cref="ObjectMotion.StickOnArrival"/>).</summary>
+    /// <summary>
+    /// Stick to the object on arrival: a MoveToObject or TurnToObject that arrives calls the object's
+    /// <see cref="Managers.PositionManager.StickTo"/> on the target (retail's BeginNextNode; see
+    /// <see cref="ObjectMotion.StickOnArrival"/>). MoveToPosition and TurnToHeading clear it, as retail does.
+    /// </summary>
     Sticky = 0x80,
     /// <summary>Move away until <see cref="MoveToParameters.MinDistance"/>.</summary>
     MoveAway = 0x100,
@@ -60,7 +64,7 @@ public enum MoveToFlags : uint
 /// </summary>
 public readonly record struct MoveToParameters
 {
-    /// <summary>Retail's defaults: <see cref="MoveToFlags.RetailDefault"/>, distance to object 0.6 m, min distance 0, fail distance float.MaxValue (none), speed 1, walk/run threshold 15 m, heading 0.</summary>
+    /// <summary>Retail's defaults: <see cref="MoveToFlags.RetailDefault"/>, distance to object 0.6 m, min distance 0, fail distance float.MaxValue (none), speed 1, walk/run threshold 15 m, heading 0, hold key Invalid.</summary>
     public static MoveToParameters Default => new();
 
     /// <summary>Retail's defaults (see <see cref="Default"/>).</summary>
@@ -74,7 +78,7 @@ public readonly record struct MoveToParameters
     public float MinDistance { get; init; }
     /// <summary>fail_distance: the move fails (<see cref="MoveToError.YouChargedTooFar"/>) once the mover is farther than this from where it started (default float.MaxValue: never).</summary>
     public float FailDistance { get; init; } = float.MaxValue;
-    /// <summary>desired_heading: the heading of a TurnToHeading, or the final heading with <see cref="MoveToFlags.UseFinalHeading"/>.</summary>
+    /// <summary>desired_heading: the heading of a TurnToHeading, or the final heading with <see cref="MoveToFlags.UseFinalHeading"/> (default 0, facing +Y).</summary>
     public float DesiredHeading { get; init; }
     /// <summary>speed: the motion commands' speed (default 1).</summary>
     public float Speed { get; init; } = 1f;
@@ -83,7 +87,7 @@ public readonly record struct MoveToParameters
     /// is more than this. Retail's constructor sets 15 m (0x41700000, acclient.c:339436); ACE's sets 1 m.
     /// </summary>
     public float WalkRunThreshold { get; init; } = 15f;
-    /// <summary>hold_key_to_apply for the turn of a TurnToHeading (a move decides its own: Run or None).</summary>
+    /// <summary>hold_key_to_apply for the turn of a TurnToHeading (default <see cref="HoldKey.Invalid"/>: the interpreter's current hold key; a move decides its own: Run or None).</summary>
     public HoldKey HoldKey { get; init; } = HoldKey.Invalid;
 
     internal bool Has(MoveToFlags f) => (Flags & f) != 0;

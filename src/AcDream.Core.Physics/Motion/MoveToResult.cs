@@ -11,7 +11,7 @@ public enum MoveToError : uint
     None = 0x00,
     /// <summary>NoPhysicsObject (8): retail's answer when the manager has no object; not produced here (a MoveTo always has one).</summary>
     NoPhysicsObject = 0x08,
-    /// <summary>ActionCancelled (0x36): cancelled by the caller, or replaced by a new MoveTo (PerformMovement).</summary>
+    /// <summary>ActionCancelled (0x36): cancelled by the caller, replaced by a new MoveTo (PerformMovement), or ended with a stick (cancel_moveto: the stick's timeout, a lost target, UnStick or a new StickTo).</summary>
     ActionCancelled = 0x36,
     /// <summary>ObjectGone (0x37): the sought object went away after the move had started (HandleUpdateTarget).</summary>
     ObjectGone = 0x37,
@@ -32,7 +32,7 @@ public enum MoveToError : uint
 /// <summary>Where a MoveTo stands.</summary>
 public enum MoveToStatus
 {
-    /// <summary>None was started since the object was created (or since the last result was taken).</summary>
+    /// <summary>No MoveTo or turn has been started on this object yet (once one has, the status never returns here).</summary>
     Idle,
     /// <summary>Waiting for the first position of the sought object (MoveToObject / TurnToObject before the first target update).</summary>
     WaitingForTarget,

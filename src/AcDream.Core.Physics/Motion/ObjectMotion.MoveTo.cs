@@ -66,8 +66,9 @@ public sealed partial class ObjectMotion
     public uint MoveToAuxCommand => _moveTo?.AuxCommand ?? 0;
 
     /// <summary>
-    /// The object a move with <see cref="MoveToFlags.Sticky"/> asked to stick to on arrival (retail hands it to
-    /// PositionManager::StickTo), 0 when none; cleared by the next MoveTo.
+    /// The object a move with <see cref="MoveToFlags.Sticky"/> asked to stick to on arrival, 0 when none; cleared by the
+    /// next MoveTo. The arrival sticks the object to it at once (<see cref="PositionManager"/>'s StickTo, as retail's
+    /// BeginNextNode does); the caller then reports the target's positions there.
     /// </summary>
     public uint StickOnArrival => _moveTo?.StickTarget ?? 0;
 
@@ -83,7 +84,9 @@ public sealed partial class ObjectMotion
         CheckTarget(target, nameof(target));
         parameters.Check(nameof(parameters));
         var view = Prepare(mover, state, body);
+        PositionManager.UnStick(); // PerformMovement: CancelMoveTo, then unstick_from_object
         MoveTo.MoveToPosition(ref view, target, parameters);
+        HandOffStick();
     }
 
     /// <summary>
@@ -103,7 +106,9 @@ public sealed partial class ObjectMotion
             throw new ArgumentException($"height: must be finite, 0 to {InputLimits.MaxCoordinate}, got {height}.", nameof(height));
         parameters.Check(nameof(parameters));
         var view = Prepare(mover, state, body);
+        PositionManager.UnStick(); // PerformMovement: CancelMoveTo, then unstick_from_object
         MoveTo.MoveToObject(ref view, objectId, objectId, radius, height, parameters);
+        HandOffStick();
     }
 
     /// <summary>MoveToManager::TurnToHeading: turn the short way to <see cref="MoveToParameters.DesiredHeading"/>, then snap to it exactly.</summary>
@@ -113,7 +118,9 @@ public sealed partial class ObjectMotion
         ArgumentNullException.ThrowIfNull(mover);
         parameters.Check(nameof(parameters));
         var view = Prepare(mover, state, body);
+        PositionManager.UnStick(); // PerformMovement: CancelMoveTo, then unstick_from_object
         MoveTo.TurnToHeading(ref view, parameters);
+        HandOffStick();
     }
 
     /// <summary>
@@ -127,7 +134,9 @@ public sealed partial class ObjectMotion
         ArgumentNullException.ThrowIfNull(mover);
         parameters.Check(nameof(parameters));
         var view = Prepare(mover, state, body);
+        PositionManager.UnStick(); // PerformMovement: CancelMoveTo, then unstick_from_object
         MoveTo.TurnToObject(ref view, objectId, objectId, parameters);
+        HandOffStick();
     }
 
     /// <summary>
@@ -144,7 +153,9 @@ public sealed partial class ObjectMotion
         if (_moveTo is null)
             return false;
         var view = Prepare(mover, state, body);
-        return _moveTo.UpdateTarget(ref view, objectId, position, present: true, out _);
+        bool waiting = _moveTo.UpdateTarget(ref view, objectId, position, present: true, out _);
+        HandOffStick();
+        return waiting;
     }
 
     /// <summary>
@@ -213,5 +224,19 @@ public sealed partial class ObjectMotion
         turned |= _moveTo.UseTime(ref view);
         if (turned)
             state.Position.Frame.Orientation = view.Position.Frame.Orientation;
+        HandOffStick();
     }
+
+    // MoveToManager::BeginNextNode's arrival with the Sticky flag calls PositionManager::StickTo(top_level_object_id,
+    // radius, height) itself (CMoveToManager.c, acclient.c:345559); the manager leaves the request for its owner.
+    private void HandOffStick()
+    {
+        if (_moveTo is not { StickPending: true } m)
+            return;
+        m.StickPending = false;
+        PositionManager.StickToChecked(m.StickTarget, m.StickRadius);
+    }
+
+    // CPhysicsObj::cancel_moveto, called when a stick ends (PositionManager).
+    internal void CancelMoveToForStick() => _moveTo?.CancelFromStick();
 }

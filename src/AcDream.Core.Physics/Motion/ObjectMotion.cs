@@ -34,7 +34,7 @@ public sealed partial class ObjectMotion
         _interp = new MotionInterpreter(_manager, skills);
         _interp.Body = new MotionInterpreter.BodyView { Gravity = true, Orientation = Quaternion.Identity };
         _interp.EnterDefaultState();
-        PositionManager = new Managers.PositionManager(_interp);
+        PositionManager = new Managers.PositionManager(_interp, this);
     }
 
     /// <summary>
