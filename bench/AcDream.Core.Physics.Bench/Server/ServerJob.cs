@@ -7,13 +7,15 @@ using System.Numerics;
 using System.Text;
 using System.Threading.Tasks;
 using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Bench.Reporting;
 
 namespace AcDream.Core.Physics.Bench.Server;
 
 /// <summary>
 /// The server tick job (<c>-- server [--creatures N,N,...] [--out DIR]</c>): N creatures over the
-/// <see cref="ServerWorld"/> 3 × 3 landblock group, each taking one body step per creature tick, ticks at
+/// <see cref="ServerWorld"/> 3 × 3 landblock group, each taking one body step through its motion layer (the humanoid
+/// table, a MoveTo toward a point with the server's GiveUp progress rule) per creature tick, ticks at
 /// 30 Hz (a step of 1/30 s every tick) and at a 5 Hz creature rate (a step of 0.2 s every sixth tick);
 /// with retail's activity rule (an object farther than 96 m from every player is not updated), counted.
 /// Prints and writes <c>server.md</c>: ns per creature step, bytes per step, and the time of the same
@@ -57,7 +59,7 @@ public static class ServerJob
         report.AppendLine(Reports.Machine() + string.Create(CultureInfo.InvariantCulture, $", load average {LoadAverage()}"));
         report.AppendLine();
         report.AppendLine(string.Create(CultureInfo.InvariantCulture,
-            $"3 × 3 landblocks, {world.Props} trees and rocks, 9 buildings (shell + room); creatures walk at 2.5 m/s, turning every 3 s; warm-up {warmSeconds:0.0} s (until the JIT settled); players at {string.Join(", ", Array.ConvertAll(Players, p => $"({p.X:0}, {p.Y:0})"))}; ns per creature step is the fastest of the timed runs."));
+            $"3 × 3 landblocks, {world.Props} trees and rocks, 9 buildings (shell + room); each creature steps through its motion layer (humanoid table, Run 200): a MoveTo toward a fixed pseudo-random point of the group (retail's default MoveTo parameters, the server's GiveUp progress rule), a new one when it ends or every 6 s of game time; warm-up {warmSeconds:0.0} s (until the JIT settled); players at {string.Join(", ", Array.ConvertAll(Players, p => $"({p.X:0}, {p.Y:0})"))}; ns per creature step is the fastest of the timed runs."));
         report.AppendLine();
         report.AppendLine("| creatures | rate | stepped / skipped per creature tick | ns per step, 1 thread | B per step | ns per step, 2 threads | 1 → 2 threads | ms per second of game time, 1 thread |");
         report.AppendLine("|---:|---|---|---:|---:|---:|---:|---:|");
@@ -153,9 +155,11 @@ public static class ServerJob
         private readonly MoverDescription _creature = MoverDescription.Player(0x8000_0001).With(physicsState: PhysicsState.Gravity);
         private readonly MoverState[] _states;
         private readonly BodyState[] _bodies;
-        private readonly float[] _headings;
+        private readonly ObjectMotion[] _motions;
+        private readonly double[] _nextOrder;
+        private readonly int[] _orders;
         private readonly int[] _seeds;
-        private int _tick;
+        private double _time;
 
         public long Stepped, Skipped;
 
@@ -164,15 +168,23 @@ public static class ServerJob
             _engine = new PhysicsEngine(world.World);
             _states = new MoverState[members.Count];
             _bodies = new BodyState[members.Count];
-            _headings = new float[members.Count];
+            _motions = new ObjectMotion[members.Count];
+            _nextOrder = new double[members.Count];
+            _orders = new int[members.Count];
             _seeds = members.ToArray();
+            var table = MotionTables.Humanoid();
             for (int i = 0; i < members.Count; i++)
             {
                 var p = StartPoint(members[i], n);
                 p.Z = ServerWorld.GroundBelow(p.X, p.Y) + 0.5f;
                 _states[i] = MoverState.Airborne(ServerWorld.At(p));
                 _bodies[i] = BodyState.Creature();
-                _headings[i] = Hash(members[i], 0) * MathF.Tau;
+                var motion = new ObjectMotion(table, new RetailSkills(200, 200));
+                motion.SetCylinder(0.48f, 1.835f);
+                // A server creature gives up a move that stops making progress (retail's client only counts).
+                motion.MoveToProgressRule = MoveToProgressRule.GiveUp;
+                motion.Place(_creature, _states[i], ref _bodies[i]);
+                _motions[i] = motion;
             }
         }
 
@@ -209,7 +221,7 @@ public static class ServerJob
         /// <summary>One server tick: every creature near a player takes one body step of <paramref name="elapsed"/> seconds.</summary>
         public void Tick(double elapsed)
         {
-            _tick++;
+            _time += elapsed;
             for (int i = 0; i < _states.Length; i++)
             {
                 var at = ServerWorld.InGroup(_states[i].Position);
@@ -219,31 +231,35 @@ public static class ServerJob
                     continue;
                 }
                 Stepped++;
-                StepCreature(i, Steer(i, at) * 2.5f, elapsed);
+                Order(i);
+                StepCreature(i, elapsed);
             }
         }
 
-        /// <summary>
-        /// The one place a creature's step is taken: the desired-velocity body step today; the motion
-        /// layer's step (motion commands in) replaces this call when it lands.
-        /// </summary>
-        private void StepCreature(int i, Vector3 desiredVelocity, double elapsed)
+        /// <summary>The one place a creature's step is taken: the motion layer's body step (commands given between steps).</summary>
+        private void StepCreature(int i, double elapsed)
         {
-            var result = _engine.Step(_creature, _states[i], _bodies[i], elapsed, desiredVelocity);
+            var result = _engine.Step(_creature, _states[i], _bodies[i], _motions[i], elapsed);
             _states[i] = result.Next;
             _bodies[i] = result.Body;
         }
 
-        /// <summary>The creature's walking direction: a new heading every 3 s (fixed per creature and time), turned back towards the middle near the group's edge.</summary>
-        private Vector3 Steer(int i, Vector3 at)
+        /// <summary>
+        /// As a server's creature AI would: when its move has ended (arrived or given up) or 6 s of game time have
+        /// passed, a MoveTo toward the next fixed pseudo-random point of the group (away from its edge).
+        /// </summary>
+        private void Order(int i)
         {
-            int epoch = _tick / 90;
-            if (_tick % 90 == 0)
-                _headings[i] = Hash(_seeds[i], 3 + epoch) * MathF.Tau;
+            var motion = _motions[i];
+            if (motion.MoveToStatus == MoveToStatus.Moving && _time < _nextOrder[i])
+                return;
+            int k = ++_orders[i];
             const float margin = 25f;
-            if (at.X < margin || at.Y < margin || at.X > ServerWorld.Extent - margin || at.Y > ServerWorld.Extent - margin)
-                _headings[i] = MathF.Atan2(ServerWorld.Extent / 2 - at.Y, ServerWorld.Extent / 2 - at.X);
-            return new Vector3(MathF.Cos(_headings[i]), MathF.Sin(_headings[i]), 0);
+            float span = ServerWorld.Extent - 2 * margin;
+            var goal = new Vector3(margin + span * Hash(_seeds[i], 2 * k + 3), margin + span * Hash(_seeds[i], 2 * k + 4), 0);
+            goal.Z = ServerWorld.GroundAt(goal.X, goal.Y);
+            motion.MoveToPosition(ServerWorld.At(goal), MoveToParameters.Default, _creature, _states[i], _bodies[i]);
+            _nextOrder[i] = _time + 6.0;
         }
 
         private static bool NearAPlayer(Vector3 at)
