@@ -1,0 +1,78 @@
+using AcDream.Core.Physics.Queries;
+using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Tests.Queries;
+
+/// <summary>Hand-picked camera arms in the built-in scenes and a sloped landblock, shared by the camera-arm tests.</summary>
+internal static class CameraArmCases
+{
+    public const uint Land = 0xA9B40025, Room = 0xA9B40100, Cellar = 0xA9B40101, Door = 0x7000_0001;
+
+    /// <summary>The worlds the arms are swung in.</summary>
+    public enum Scene { Cottage, OpenCottage, CellarStair, Door, Trunk, Boulder, Slope }
+
+    public readonly record struct Arm(string Name, Scene World, uint Cell, Vector3 Pivot, Vector3 Desired, uint Player = 0);
+
+    public static readonly Arm[] Table =
+    [
+        new("room, open, stays inside", Scene.Cottage, Room, new(100, 101, 1.5f), new(99, 102.5f, 2f)),
+        new("room, 5 m, stops at the north wall", Scene.Cottage, Room, new(100, 101, 1.5f), new(100, 106, 1.5f)),
+        new("room, diagonal into the north-east corner", Scene.Cottage, Room, new(99.2f, 101.3f, 1.6f), new(103.5f, 105.1f, 2.4f)),
+        new("room, up into the ceiling", Scene.Cottage, Room, new(99.5f, 102, 1.6f), new(99.1f, 102.7f, 4.5f)),
+        new("room, towards the closed door", Scene.Cottage, Room, new(100.1f, 102.5f, 1.4f), new(100.1f, 97, 1.4f)),
+        new("room, through the open doorway", Scene.OpenCottage, Room, new(100, 102.5f, 1.2f), new(100.2f, 96, 1.0f)),
+        new("room, beside the doorway into the south wall", Scene.OpenCottage, Room, new(101.3f, 102, 1.5f), new(101.3f, 97, 1.5f)),
+        new("room, down the stairwell portal into the cellar", Scene.CellarStair, Room, new(101.25f, 101.5f, 1.2f), new(101.3f, 103.5f, -0.7f)),
+        new("cellar, up into the room", Scene.CellarStair, Cellar, new(101.2f, 103.5f, -0.6f), new(100.4f, 102, 1.8f)),
+        new("outdoors, onto the door slab", Scene.Door, Land, new(100, 97, 1.5f), new(100, 103, 1.5f)),
+        new("outdoors, into the ground", Scene.Door, Land, new(90, 90, 1.5f), new(90, 94, -2)),
+        new("outdoors, clear beside the door", Scene.Door, Land, new(96, 97, 1.5f), new(96, 103, 1.5f)),
+        new("outdoors, the door as the player", Scene.Door, Land, new(100, 97, 1.5f), new(100, 103, 1.5f), Door),
+        new("outdoors, grazing the trunk", Scene.Trunk, Land, new(100.5f, 96, 1.5f), new(100.95f, 104, 1.3f)),
+        new("outdoors, onto the boulder", Scene.Boulder, Land, new(97, 97.5f, 1.0f), new(101, 101, 0.6f)),
+        new("outdoors, over the sloped ground", Scene.Slope, 0xA9B40001, new(5, 5, 9), new(20, 30, 12)),
+        new("outdoors, into the slope", Scene.Slope, 0xA9B40001, new(30, 30, 20), new(40, 40, 0)),
+        new("outdoors, across a landblock's cells downhill", Scene.Slope, 0xA9B40001, new(60, 70, 60), new(40, 50, 40)),
+    ];
+
+    private static readonly Dictionary<Scene, PhysicsWorld> Worlds = new();
+
+    /// <summary>A query over a scene's world (worlds are built once and never modified).</summary>
+    public static WorldQuery QueryFor(Scene scene) => new(WorldOf(scene));
+
+    public static PhysicsWorld WorldOf(Scene scene)
+    {
+        lock (Worlds)
+        {
+            if (!Worlds.TryGetValue(scene, out var world))
+                Worlds[scene] = world = Build(scene);
+            return world;
+        }
+    }
+
+    private static PhysicsWorld Build(Scene scene)
+    {
+        switch (scene)
+        {
+            case Scene.Cottage: return SceneLibrary.Load("cottage").World;
+            case Scene.OpenCottage:
+                var open = SceneLibrary.Load("cottage").World;
+                Assert.True(open.Objects.Unregister(Door));
+                return open;
+            case Scene.CellarStair: return SceneLibrary.Load("cellar").World;
+            case Scene.Door: return SceneLibrary.Load("door").World;
+            case Scene.Trunk: return SceneLibrary.Load("trunk").World;
+            case Scene.Boulder: return SceneLibrary.Load("boulder").World;
+            default:
+                // A landblock rising to the north-east with a ripple: every triangle its own slope.
+                var heights = new float[Terrain.VerticesPerSide * Terrain.VerticesPerSide];
+                for (int x = 0; x < Terrain.VerticesPerSide; x++)
+                    for (int y = 0; y < Terrain.VerticesPerSide; y++)
+                        heights[x * Terrain.VerticesPerSide + y] = 0.25f * x * 24 * 0.1f + 0.15f * y * 24 * 0.1f + (x * 7 + y * 3) % 5 * 0.6f;
+                var world = new PhysicsWorld();
+                world.Cells.AddLandblock(new Terrain(0xA9B4, heights));
+                return world;
+        }
+    }
+}
