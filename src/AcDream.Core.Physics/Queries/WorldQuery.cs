@@ -169,6 +169,19 @@ public sealed class WorldQuery
         return new CameraArmResult(pivot, CameraPlacement.AtPivot, false, Vector3.Zero);
     }
 
+    /// <summary>
+    /// The camera arm walks every sub-step, as retail does, instead of passing over the stretch its viewer
+    /// transition proves touches nothing (the same answers, bit for bit; for the tests that compare the two).
+    /// </summary>
+    internal bool WalkEverySubStep
+    {
+        get => _viewer.Transition.WalkEveryViewerStep;
+        set => _viewer.Transition.WalkEveryViewerStep = value;
+    }
+
+    /// <summary>How many sub-steps the last camera arm passed over without walking them (for tests).</summary>
+    internal int PassedSubSteps => _viewer.Transition.PassedViewerSteps;
+
     /// <summary>Queries read only a position's origin and cell (the camera also its rotation); the cell must be in the world.</summary>
     private void CheckPosition(in Position position, string originField, string cellField)
     {

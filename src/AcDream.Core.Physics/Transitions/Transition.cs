@@ -146,7 +146,9 @@ internal sealed partial class Transition
             return true;
         }
 
-        for (int step = 0; step < numSteps; step++)
+        // The camera arm passes over the leading sub-steps it proves touch nothing (Transition.ViewerSkip.cs).
+        int first = IsViewer ? PassClearViewerSteps(in plan) : 0;
+        for (int step = first; step < numSteps; step++)
         {
             if (IsViewer && step == numSteps - 1)
             {

@@ -1,4 +1,7 @@
+using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Queries;
+using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 
@@ -10,7 +13,7 @@ internal static class CameraArmCases
     public const uint Land = 0xA9B40025, Room = 0xA9B40100, Cellar = 0xA9B40101, Door = 0x7000_0001;
 
     /// <summary>The worlds the arms are swung in.</summary>
-    public enum Scene { Cottage, OpenCottage, CellarStair, Door, Trunk, Boulder, Slope }
+    public enum Scene { Cottage, OpenCottage, CellarStair, Door, Trunk, Boulder, Slope, FurnishedCottage, BarrelAtTheDoorway }
 
     public readonly record struct Arm(string Name, Scene World, uint Cell, Vector3 Pivot, Vector3 Desired, uint Player = 0);
 
@@ -51,6 +54,28 @@ internal static class CameraArmCases
         }
     }
 
+    /// <summary>
+    /// The cottage with things in its room, one of each kind the viewer treats apart: a table (a BSP box), a
+    /// standing creature (a cylinder the viewer ignores), an ethereal sphere that ignores collisions (passed
+    /// untested), an ethereal sphere (tested, passed through), a static sphere, a lamp with two rows.
+    /// </summary>
+    private static PhysicsWorld Furnished()
+    {
+        var world = SceneLibrary.Load("cottage").World;
+        static Position In(float x, float y, float z) => new(Room, new Vector3(x, y, z));
+        static PhysicsSetup Ball(float r) => new() { Spheres = [new Sphere(Vector3.Zero, r)] };
+        var table = new PhysicsSetup { Parts = [new SetupPart(new PhysicsModel(BspShapes.Box(new Vector3(-0.4f, -0.4f, 0), new Vector3(0.4f, 0.4f, 0.8f)), name: "table"), Frame.Identity)] };
+        world.Objects.Register(0x7000_0101, table, In(99, 103, 0), 1f, PhysicsState.Static);
+        world.Objects.Register(0x7000_0102, new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.4f, 1.8f)] }, In(101, 102, 0), 1f,
+            PhysicsState.None, ShadowFlags.IsCreature);
+        world.Objects.Register(0x7000_0103, Ball(0.5f), In(99.2f, 101, 1.5f), 1f, PhysicsState.Ethereal | PhysicsState.IgnoreCollisions);
+        world.Objects.Register(0x7000_0104, Ball(0.3f), In(101.3f, 103.2f, 2.2f), 1f, PhysicsState.Ethereal);
+        world.Objects.Register(0x7000_0105, Ball(0.25f), In(100.8f, 100.8f, 2.5f), 1f, PhysicsState.Static);
+        world.Objects.Register(0x7000_0106, new PhysicsSetup { Spheres = [new Sphere(Vector3.Zero, 0.15f), new Sphere(new Vector3(0, 0, 0.5f), 0.1f)] },
+            In(98.5f, 101.5f, 2.0f), 1f, PhysicsState.Static);
+        return world;
+    }
+
     private static PhysicsWorld Build(Scene scene)
     {
         switch (scene)
@@ -64,6 +89,18 @@ internal static class CameraArmCases
             case Scene.Door: return SceneLibrary.Load("door").World;
             case Scene.Trunk: return SceneLibrary.Load("trunk").World;
             case Scene.Boulder: return SceneLibrary.Load("boulder").World;
+            case Scene.FurnishedCottage: return Furnished();
+            case Scene.BarrelAtTheDoorway:
+                // The open cottage with a barrel (a cylinder scaled 3x) just outside the doorway: retail lists a
+                // cylinder object by its unscaled feet, so it is listed outdoors only, yet its scaled side reaches
+                // 0.1 m into the room. A camera in the room meets it only once the sphere nears the doorway's
+                // portal plane and the cell search adds the outside cells.
+                var barrel = SceneLibrary.Load("cottage").World;
+                Assert.True(barrel.Objects.Unregister(Door));
+                barrel.Objects.Register(0x7000_0201, new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.2f, 0.7f)] },
+                    new Position(Land, new Vector3(100, 99.5f, 0)), 3f, PhysicsState.Static);
+                Assert.Equal([Land], barrel.Objects.CellsOf(0x7000_0201));
+                return barrel;
             default:
                 // A landblock rising to the north-east with a ripple: every triangle its own slope.
                 var heights = new float[Terrain.VerticesPerSide * Terrain.VerticesPerSide];

@@ -1,0 +1,80 @@
+using System;
+using System.Numerics;
+using AcDream.Core.Physics.World;
+
+namespace AcDream.Core.Physics.Transitions;
+
+internal sealed partial class Transition
+{
+    /// <summary>
+    /// Walk every sub-step of a viewer transition, as retail does, instead of passing over the ones
+    /// <see cref="ViewerClearance"/> proves touch nothing. For tests, which compare the two bit for bit.
+    /// </summary>
+    internal bool WalkEveryViewerStep { get; set; }
+
+    /// <summary>How many sub-steps the last viewer transition passed over (for tests: that the skip happens at all).</summary>
+    internal int PassedViewerSteps { get; private set; }
+
+    /// <summary>
+    /// The camera arm's shortcut (not retail; changes no result): most of a viewer's sub-steps touch nothing.
+    /// Such a sub-step, from a path with no contact plane, sliding normal, collision normal or contact (the
+    /// camera's start), offsets the check position by the unconstrained sub-step (adjust_offset changes
+    /// nothing), inserts it into its cell, finds nothing, keeps the cell (find_cell_list lists only it and
+    /// finds the centre in it) and is accepted: the check position becomes current. When the leading
+    /// sub-steps of a path starting in an indoor cell are proven so (<see cref="ViewerClearance"/>), this
+    /// makes the very same sums of the very same sub-step and leaves the path, the cell list and the
+    /// contacts as the walk would; the sub-steps from the first one that may touch something (and always
+    /// the shorter last one) are walked. Nothing is skipped when unsure, when an observer watches, or when
+    /// <see cref="WalkEveryViewerStep"/> is set.
+    /// </summary>
+    /// <returns>How many sub-steps were passed over (0 to the plan's step count − 1).</returns>
+    private int PassClearViewerSteps(in StepPlan plan)
+    {
+        PassedViewerSteps = 0;
+        var path = SpherePath;
+        var ci = CollisionInfo;
+        int numSteps = plan.NumSteps;
+        if (WalkEveryViewerStep || Observer is not null || numSteps < 2 || plan.FirstKnown
+            || path.InsertType != InsertType.Transition || path.NumSphere != 1
+            || (ObjectInfo.State & (ObjectInfoState.FreeRotate | ObjectInfoState.Contact | ObjectInfoState.OnWalkable)) != ObjectInfoState.FreeRotate
+            || ci.ContactPlaneValid || ci.SlidingNormalValid || ci.CollisionNormalValid || ci.LastKnownContactPlaneValid
+            || path.CurCell is not EnvCell cell || !ReferenceEquals(path.CheckCell, cell)
+            || path.CurPos.CellId != cell.Id || path.CheckPos.CellId != cell.Id)
+            return 0;
+
+        int most = numSteps - 1;
+        var perStep = plan.PerStep;
+        var start = path.GlobalSphere[0].Center;
+        var end = start + perStep * most;
+        float size = MathF.Max(MaxAbs(start), MaxAbs(end));
+        if (!(size <= ViewerClearance.MaxCoordinate))
+            return 0;
+        // Each walked sub-step adds in float: at most half an ulp of the sum per axis, ~1.2e-7 × size, plus the
+        // sub-step's own rounding. Passed-over steps stay within the drift budget of the ideal centres.
+        float drift = 2.5e-7f * (size + 1f);
+        most = Math.Min(most, (int)(ViewerClearance.DriftBudget / drift));
+
+        float clear = ViewerClearance.ClearFraction(World.Cells, World.Objects, cell, start, end, path.GlobalSphere[0].Radius, ObjectInfo.ObjectId);
+        // Sub-step i ends at the fraction i / (numSteps − 1) of the segment: pass those strictly before the first doubt.
+        int count = float.IsPositiveInfinity(clear) ? most : Math.Min(most, (int)Math.Ceiling((double)clear * (numSteps - 1)) - 1);
+        if (count <= 0)
+            return 0;
+
+        // What the walked sub-steps would leave: the check position moved by the same sums, accepted.
+        var origin = path.CheckPos.Frame.Origin;
+        for (int i = 0; i < count; i++)
+            origin += perStep;
+        var check = path.CheckPos;
+        check.Frame.Origin = origin;
+        path.GlobalOffset = perStep;
+        path.SetCheckPos(check, cell);
+        CellArray.Clear();
+        CellArray.Add(cell);
+        path.HitsInteriorCell = true;
+        SetCurrentCheckPos();
+        PassedViewerSteps = count;
+        return count;
+    }
+
+    private static float MaxAbs(Vector3 v) => MathF.Max(MathF.Abs(v.X), MathF.Max(MathF.Abs(v.Y), MathF.Abs(v.Z)));
+}
