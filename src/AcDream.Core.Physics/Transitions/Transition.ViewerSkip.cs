@@ -54,7 +54,7 @@ internal sealed partial class Transition
         float drift = 2.5e-7f * (size + 1f);
         most = Math.Min(most, (int)(ViewerClearance.DriftBudget / drift));
 
-        float clear = ViewerClearance.ClearFraction(World.Cells, World.Objects, cell, start, end, path.GlobalSphere[0].Radius, ObjectInfo.ObjectId);
+        float clear = ViewerClearance.ClearFraction(World.Cells, World.Objects, cell, start, end, path.GlobalSphere[0].Radius, ObjectInfo);
         // Sub-step i ends at the fraction i / (numSteps − 1) of the segment: pass those strictly before the first doubt.
         int count = float.IsPositiveInfinity(clear) ? most : Math.Min(most, (int)Math.Ceiling((double)clear * (numSteps - 1)) - 1);
         if (count <= 0)

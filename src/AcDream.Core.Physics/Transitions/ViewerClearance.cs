@@ -1,6 +1,8 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;
@@ -14,9 +16,8 @@ namespace AcDream.Core.Physics.Transitions;
 /// <list type="bullet">
 /// <item>no polygon of the cell's physics BSP lies within the radius (retail's polygon tests need the
 /// sphere, shrunk by EPSILON, to reach the polygon), judged by the polygon's plane band and widened box;</item>
-/// <item>no object listed in the cell that the viewer tests has its reach box within the radius (the box
-/// <see cref="ObjectCull"/> relies on); the viewer's own object, creatures and ethereal objects that ignore
-/// collisions are passed without being tested, as in <see cref="ObjectCollisions"/>;</item>
+/// <item>no shape the viewer would test of an object listed in the cell has the box its test needs the
+/// sphere to meet within the radius (see <see cref="FirstNearObject"/>);</item>
 /// <item>the cell search (find_cell_list) lists only the cell and finds the centre in it: the centre is in
 /// front of every split of the cell's containment chain, the sphere stays off the plane of every portal
 /// to the outside, and a split of every neighbour's containment chain has the sphere outside it.</item>
@@ -46,7 +47,7 @@ internal static class ViewerClearance
     /// <paramref name="cell"/>) before which a sphere of <paramref name="radius"/> is clear in the sense
     /// above; <see cref="float.PositiveInfinity"/> when the whole segment is.
     /// </summary>
-    public static float ClearFraction(CellGraph cells, ShadowObjectRegistry objects, EnvCell cell, Vector3 a, Vector3 b, float radius, uint selfId)
+    public static float ClearFraction(CellGraph cells, ShadowObjectRegistry objects, EnvCell cell, Vector3 a, Vector3 b, float radius, ObjectInfo mover)
     {
         float reach = radius + Margin;
         var la = cell.ToLocal(a);
@@ -72,7 +73,7 @@ internal static class ViewerClearance
         if (limit > 0f && cell.PhysicsBsp is { } bsp)
             limit = MathF.Min(limit, FirstNearPolygon(bsp, la, lb, reach, limit));
         if (limit > 0f)
-            limit = MathF.Min(limit, FirstNearObject(objects.ObjectsInCell(cell.Id), a, b, reach, selfId));
+            limit = MathF.Min(limit, FirstNearObject(objects.ObjectsInCell(cell.Id), cell.Id, mover, a, b, reach));
         return MathF.Max(limit, 0f);
     }
 
@@ -156,7 +157,10 @@ internal static class ViewerClearance
             {
                 var polygon = polygons[indices[node.FirstPolygon + k]];
                 float enter = 0f, exit = 1f;
+                // The plane band first: it alone passes most of a room's polygons (floor, ceiling, the walls beside the arm).
                 Within(Distance(polygon.Plane, la), Distance(polygon.Plane, lb), -reach, reach, ref enter, ref exit);
+                if (!(enter <= exit && enter < limit))
+                    continue;
                 Within(la.X, lb.X, polygon.BoxMin.X - reach, polygon.BoxMax.X + reach, ref enter, ref exit);
                 Within(la.Y, lb.Y, polygon.BoxMin.Y - reach, polygon.BoxMax.Y + reach, ref enter, ref exit);
                 Within(la.Z, lb.Z, polygon.BoxMin.Z - reach, polygon.BoxMax.Z + reach, ref enter, ref exit);
@@ -169,29 +173,79 @@ internal static class ViewerClearance
         return limit;
     }
 
-    /// <summary>The first fraction at which the sphere, grown to <paramref name="reach"/>, meets the reach box of an object the viewer tests.</summary>
-    private static float FirstNearObject(ShadowObjectRegistry.CellObjects objects, Vector3 a, Vector3 b, float reach, uint selfId)
+    /// <summary>
+    /// The first fraction at which the sphere, grown to <paramref name="reach"/>, may touch a shape of an
+    /// object listed in the cell, by the rules of <see cref="ObjectCollisions"/>: the objects it passes
+    /// untested (the mover itself, an ethereal object that ignores collisions, a creature for the viewer,
+    /// a missile or PvP exemption) are left out, and of the others only the rows of the dispatched rung
+    /// count, each by the box its test needs the sphere to meet: a BSP part's polygon box
+    /// (<see cref="Shapes.PartCollision.MayTouchPolygons"/>; its placed bounding sphere when the object is an
+    /// ethereal obstruction, which that cull does not apply to), a cylinder's upright slab, a sphere's bounds,
+    /// these last two as the registry's reach box takes them (<see cref="ShadowEntry.Margin"/> wider).
+    /// </summary>
+    private static float FirstNearObject(ShadowObjectRegistry.CellObjects objects, uint cellId, ObjectInfo mover, Vector3 a, Vector3 b, float reach)
     {
         float first = float.PositiveInfinity;
+        var sweptMin = Vector3.Min(a, b) - new Vector3(reach);
+        var sweptMax = Vector3.Max(a, b) + new Vector3(reach);
+        uint self = mover.ObjectId;
         for (int o = 0; o < objects.Count; o++)
         {
             var rows = objects.RowsOf(o);
-            if (rows.Length == 0)
+            if (rows.Length == 0 || !objects.Reaches(o, sweptMin, sweptMax))
                 continue;
             ref readonly var head = ref rows[0];
-            // Passed by ObjectCollisions before any test or write: the mover itself, an ethereal object that
-            // ignores collisions, a creature (the viewer's rule).
-            if ((head.EntityId == selfId && selfId != 0)
-                || (head.State & (PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)) == (PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)
-                || (head.Flags & ShadowFlags.IsCreature) != 0)
+            var state = head.State;
+            if ((head.EntityId == self && self != 0)
+                || (state & (PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)) == (PhysicsState.Ethereal | PhysicsState.IgnoreCollisions)
+                || ((mover.State & ObjectInfoState.IsViewer) != 0 && (head.Flags & ShadowFlags.IsCreature) != 0))
                 continue;
-            objects.ReachBoxOf(o, out var min, out var max);
-            float enter = 0f, exit = 1f;
-            Within(a.X, b.X, min.X - reach, max.X + reach, ref enter, ref exit);
-            Within(a.Y, b.Y, min.Y - reach, max.Y + reach, ref enter, ref exit);
-            Within(a.Z, b.Z, min.Z - reach, max.Z + reach, ref enter, ref exit);
-            if (enter <= exit)
-                first = MathF.Min(first, enter);
+            bool ethereal = (state & PhysicsState.Ethereal) != 0 || ((state & PhysicsState.Static) == 0 && mover.Ethereal);
+            bool exemption = ObjectCollisions.PvpExemption(mover.State, head.Flags);
+            bool missileIgnore = ObjectCollisions.MissileIgnore(mover, head.EntityId, state, head.Flags);
+            ShadowShapeKind rung;
+            if (ObjectCollisions.BspOnlyDispatch(state, missileIgnore, exemption))
+                rung = ShadowShapeKind.Bsp;
+            else if (missileIgnore || exemption)
+                continue;
+            else
+                rung = head.CylSphereCount > 0 ? ShadowShapeKind.Cylinder : ShadowShapeKind.Sphere;
+            foreach (ref readonly var row in rows)
+            {
+                if (row.Kind != rung)
+                    continue;
+                Vector3 min, max;
+                if (rung == ShadowShapeKind.Bsp && !ethereal)
+                {
+                    var shift = LandDefs.BlockOffset(cellId, row.PartPosition.CellId);
+                    (min, max) = (row.PolygonsMin + shift, row.PolygonsMax + shift);
+                }
+                else
+                {
+                    var shift = LandDefs.BlockOffset(cellId, row.Position.CellId);
+                    var margin = ShadowEntry.Margin(row.Scale);
+                    if (rung == ShadowShapeKind.Cylinder)
+                    {
+                        var cyl = row.Shape.Cylinder;
+                        var low = row.PlacedPoint + shift;
+                        min = low - new Vector3(cyl.Radius, cyl.Radius, 0) - margin;
+                        max = low + new Vector3(cyl.Radius, cyl.Radius, cyl.Height) + margin;
+                    }
+                    else
+                    {
+                        var bounds = row.Shape.Bounds;
+                        var centre = row.Position.LocalToGlobal(bounds.Center) + shift;
+                        min = centre - new Vector3(bounds.Radius) - margin;
+                        max = centre + new Vector3(bounds.Radius) + margin;
+                    }
+                }
+                float enter = 0f, exit = 1f;
+                Within(a.X, b.X, min.X - reach, max.X + reach, ref enter, ref exit);
+                Within(a.Y, b.Y, min.Y - reach, max.Y + reach, ref enter, ref exit);
+                Within(a.Z, b.Z, min.Z - reach, max.Z + reach, ref enter, ref exit);
+                if (enter <= exit)
+                    first = MathF.Min(first, enter);
+            }
         }
         return first;
     }
@@ -205,6 +259,7 @@ internal static class ViewerClearance
     }
 
     /// <summary>Narrows [enter, exit] to the fractions t at which v0 + t (v1 − v0) lies within [lo, hi] (empty: enter &gt; exit).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static void Within(float v0, float v1, float lo, float hi, ref float enter, ref float exit)
     {
         float dv = v1 - v0;

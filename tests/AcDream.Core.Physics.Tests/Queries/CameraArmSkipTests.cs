@@ -54,6 +54,20 @@ public class CameraArmSkipTests
     }
 
     [Fact]
+    public void InTheCottageRoom_TheArmToTheNorthWall_PassesOverTheSubStepsMoreThanACentimetreShortOfIt()
+    {
+        // From y 101 towards 106 in 17 sub-steps of 0.3 m: the wall's face is at y 104, so a sphere 1 cm wider
+        // than the camera's (0.31 m) stays clear of it up to a centre at 103.69: sub-steps 1-8 (y 101.3 .. 103.4)
+        // are passed over, the 9th (103.7) is walked and the 10th meets the wall.
+        var q = CameraArmCases.QueryFor(CameraArmCases.Scene.Cottage);
+        q.CameraArm(new Position(CameraArmCases.Room, new Vector3(100, 101, 1.5f)), new Vector3(100, 106, 1.5f));
+        Assert.Equal(8, q.PassedSubSteps);
+        // Outdoors nothing is passed over (the skip is for indoor start cells only).
+        q.CameraArm(new Position(CameraArmCases.Land, new Vector3(96, 97, 1.5f)), new Vector3(96, 103, 1.5f));
+        Assert.Equal(0, q.PassedSubSteps);
+    }
+
+    [Fact]
     public void RandomArms_PassingOverClearSubSteps_AnswerAsWalkingEverySubStep_BitForBit()
     {
         // 10,800 arms (1,200 per world, fixed seed) in the built-in scenes, the furnished cottage, the open one with
