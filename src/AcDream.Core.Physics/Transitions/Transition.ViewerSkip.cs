@@ -64,10 +64,10 @@ internal sealed partial class Transition
         var origin = path.CheckPos.Frame.Origin;
         for (int i = 0; i < count; i++)
             origin += perStep;
-        var check = path.CheckPos;
-        check.Frame.Origin = origin;
+        // The check spheres are not computed for the moved check position here: accepting it (below) computes
+        // the current ones and copies them, as after a walked sub-step (the spheres' caches compare bits).
+        path.CheckPos.Frame.Origin = origin;
         path.GlobalOffset = perStep;
-        path.SetCheckPos(check, cell);
         CellArray.Clear();
         CellArray.Add(cell);
         path.HitsInteriorCell = true;

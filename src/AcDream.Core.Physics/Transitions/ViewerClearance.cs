@@ -77,6 +77,7 @@ internal static class ViewerClearance
         return MathF.Max(limit, 0f);
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static float Distance(in Plane plane, Vector3 p) => Vector3.Dot(plane.Normal, p) + plane.D;
 
     /// <summary>
