@@ -155,7 +155,12 @@ public sealed class WorldQuery
         // Retail starts an indoor pivot in the cell that holds it (CPhysicsObj::AdjustPosition) and an outdoor
         // one in the player's cell; here the pivot's cell id only names its frame, so both start in the cell
         // holding the pivot (outdoors the same cell unless the pivot lies across a cell border).
-        if (!FindCell(pivot, out var start))
+        // An indoor pivot inside its own cell is found at once: the cell search lists that cell first and
+        // takes the first indoor cell holding the point (the same answer, same bits, without the search).
+        Position start;
+        if (World.Cells.Get(pivot.CellId) is EnvCell own && own.ContainsPoint(pivot.Origin))
+            start = pivot;
+        else if (!FindCell(pivot, out start))
             return new CameraArmResult(pivot, CameraPlacement.AtPivot, false, Vector3.Zero);
         var target = new Position(start.CellId, new Frame(desired - LandDefs.BlockOffset(pivot.CellId, start.CellId), start.Frame.Orientation));
         if (_viewerMover is null || _viewerMover.ObjectId != playerId)
