@@ -65,6 +65,15 @@ public class CameraArmSkipTests
         // Outdoors nothing is passed over (the skip is for indoor start cells only).
         q.CameraArm(new Position(CameraArmCases.Land, new Vector3(96, 97, 1.5f)), new Vector3(96, 103, 1.5f));
         Assert.Equal(0, q.PassedSubSteps);
+
+        // Nor when an observer watches: it sees every sub-step, the 10th meeting the wall.
+        var log = new Physics.Diagnostics.TransitionEventLog();
+        var engine = new PhysicsEngine(CameraArmCases.WorldOf(CameraArmCases.Scene.Cottage)) { Observer = log };
+        var viewer = new MoverDescription(0, [new Sphere(Vector3.Zero, WorldQuery.ViewerRadius)], 0f, 0f, PhysicsState.None, WorldQuery.ViewerFlags);
+        var room = new Position(CameraArmCases.Room, new Vector3(100, 101, 1.5f));
+        engine.Resolve(viewer, MoverState.Airborne(room), new Position(CameraArmCases.Room, new Vector3(100, 106, 1.5f)));
+        Assert.Equal(0, engine.Transition.PassedViewerSteps);
+        Assert.Equal(10, log.Events.Count(e => e.Kind == Physics.Diagnostics.TransitionEventKind.SubStep));
     }
 
     [Fact]
