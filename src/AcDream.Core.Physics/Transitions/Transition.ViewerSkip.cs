@@ -38,7 +38,7 @@ internal sealed partial class Transition
             || path.InsertType != InsertType.Transition || path.NumSphere != 1
             || (ObjectInfo.State & (ObjectInfoState.FreeRotate | ObjectInfoState.Contact | ObjectInfoState.OnWalkable)) != ObjectInfoState.FreeRotate
             || ci.ContactPlaneValid || ci.SlidingNormalValid || ci.CollisionNormalValid || ci.LastKnownContactPlaneValid
-            || path.CurCell is not EnvCell cell || !ReferenceEquals(path.CheckCell, cell)
+            || path.CurCell is not { } cell || !ReferenceEquals(path.CheckCell, cell)
             || path.CurPos.CellId != cell.Id || path.CheckPos.CellId != cell.Id)
             return 0;
 
@@ -54,23 +54,51 @@ internal sealed partial class Transition
         float drift = 2.5e-7f * (size + 1f);
         most = Math.Min(most, (int)(ViewerClearance.DriftBudget / drift));
 
-        float clear = ViewerClearance.ClearFraction(World.Cells, World.Objects, cell, start, end, path.GlobalSphere[0].Radius, ObjectInfo);
+        float radius = path.GlobalSphere[0].Radius;
+        var land = cell as LandCell;
+        float clear = land is not null
+            ? ViewerClearance.ClearFractionOutdoors(World.Objects, land, start, end, radius, ObjectInfo)
+            : ViewerClearance.ClearFraction(World.Cells, World.Objects, (EnvCell)cell, start, end, radius, ObjectInfo);
         // Sub-step i ends at the fraction i / (numSteps − 1) of the segment: pass those strictly before the first doubt.
         int count = float.IsPositiveInfinity(clear) ? most : Math.Min(most, (int)Math.Ceiling((double)clear * (numSteps - 1)) - 1);
         if (count <= 0)
             return 0;
 
-        // What the walked sub-steps would leave: the check position moved by the same sums, accepted.
+        // What the walked sub-steps would leave: the check position moved by the same sums, accepted. Outdoors
+        // each walked sub-step also re-labels the position with its land cell (AdjustCheckPos: the landblock
+        // offset, zero, added), and passes only while the cell holds the centre (the sphere centre is the
+        // origin: the viewer's sphere sits at the mover's origin).
         var origin = path.CheckPos.Frame.Origin;
-        for (int i = 0; i < count; i++)
-            origin += perStep;
+        if (land is not null)
+        {
+            if (path.LocalSphere[0].Center != Vector3.Zero)
+                return 0;
+            var relabel = LandDefs.BlockOffset(land.Id, land.Id);
+            int held = 0;
+            while (held < count)
+            {
+                var next = origin + perStep + relabel;
+                if (!land.ContainsPoint(next))
+                    break;
+                origin = next;
+                held++;
+            }
+            count = held;
+            if (count <= 0)
+                return 0;
+        }
+        else
+        {
+            for (int i = 0; i < count; i++)
+                origin += perStep;
+        }
         // The check spheres are not computed for the moved check position here: accepting it (below) computes
         // the current ones and copies them, as after a walked sub-step (the spheres' caches compare bits).
         path.CheckPos.Frame.Origin = origin;
         path.GlobalOffset = perStep;
         CellArray.Clear();
         CellArray.Add(cell);
-        path.HitsInteriorCell = true;
+        path.HitsInteriorCell = land is null;
         SetCurrentCheckPos();
         PassedViewerSteps = count;
         return count;

@@ -77,6 +77,41 @@ internal static class ViewerClearance
         return MathF.Max(limit, 0f);
     }
 
+    /// <summary>
+    /// <see cref="ClearFraction"/> for a path starting in an outdoor cell without a building: the cell search
+    /// (add_all_outside_cells) lists only the cell under the centre while the centre stays more than the radius
+    /// inside the cell's square on both axes (check_add_cell_boundary), here the grown radius; the viewer's arm
+    /// of validate_walkable finds nothing while the sphere's bottom stays above the terrain's plane (here the
+    /// grown sphere above both triangles' planes, whichever is under it); the cell's objects as indoors. The
+    /// caller checks that each passed-over centre lies on the cell's triangles (the cell holds it).
+    /// </summary>
+    public static float ClearFractionOutdoors(ShadowObjectRegistry objects, LandCell cell, Vector3 a, Vector3 b, float radius, ObjectInfo mover)
+    {
+        if (cell.Building is not null)
+            return 0f;
+        float reach = radius + Margin;
+        var corner = LandDefs.LandCellCorner(cell.Id);
+        const float size = PhysicsConstants.LandCellLength;
+        float limit = MathF.Min(FirstOutside(a.X, b.X, corner.X + reach, corner.X + size - reach),
+            FirstOutside(a.Y, b.Y, corner.Y + reach, corner.Y + size - reach));
+        var (first, second) = cell.Triangles;
+        limit = MathF.Min(limit, FirstWithin(Distance(first.Plane, a), Distance(first.Plane, b), float.NegativeInfinity, reach));
+        limit = MathF.Min(limit, FirstWithin(Distance(second.Plane, a), Distance(second.Plane, b), float.NegativeInfinity, reach));
+        if (limit > 0f)
+            limit = MathF.Min(limit, FirstNearObject(objects.ObjectsInCell(cell.Id), cell.Id, mover, a, b, reach));
+        return MathF.Max(limit, 0f);
+    }
+
+    /// <summary>The first fraction of [0, 1] at which v0 + t (v1 − v0) is outside [lo, hi]; infinity when it never is.</summary>
+    private static float FirstOutside(float v0, float v1, float lo, float hi)
+    {
+        float enter = 0f, exit = 1f;
+        Within(v0, v1, lo, hi, ref enter, ref exit);
+        if (!(enter <= 0f && enter <= exit))
+            return 0f;
+        return exit >= 1f ? float.PositiveInfinity : exit;
+    }
+
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static float Distance(in Plane plane, Vector3 p) => Vector3.Dot(plane.Normal, p) + plane.D;
 

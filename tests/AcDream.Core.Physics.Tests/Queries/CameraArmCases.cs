@@ -13,7 +13,7 @@ internal static class CameraArmCases
     public const uint Land = 0xA9B40025, Room = 0xA9B40100, Cellar = 0xA9B40101, Door = 0x7000_0001;
 
     /// <summary>The worlds the arms are swung in.</summary>
-    public enum Scene { Cottage, OpenCottage, CellarStair, Door, Trunk, Boulder, Slope, FurnishedCottage, BarrelAtTheDoorway }
+    public enum Scene { Cottage, OpenCottage, CellarStair, Door, Trunk, Boulder, Slope, FurnishedCottage, BarrelAtTheDoorway, BarrelAtACellBorder }
 
     public readonly record struct Arm(string Name, Scene World, uint Cell, Vector3 Pivot, Vector3 Desired, uint Player = 0);
 
@@ -85,6 +85,15 @@ internal static class CameraArmCases
                 var open = SceneLibrary.Load("cottage").World;
                 Assert.True(open.Objects.Unregister(Door));
                 return open;
+            case Scene.BarrelAtACellBorder:
+                // The door scene with the same scaled barrel 0.3 m east of the border x = 96 between land cells
+                // 0xA9B4001D and 0xA9B40025: listed in 0025 only, its side reaches 0.3 m into 001D, where a camera
+                // meets it only once the cell search adds 0025 (its sphere within its radius of the border).
+                var border = SceneLibrary.Load("door").World;
+                border.Objects.Register(0x7000_0202, new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.2f, 0.7f)] },
+                    new Position(Land, new Vector3(96.3f, 101, 0)), 3f, PhysicsState.Static);
+                Assert.Equal([Land], border.Objects.CellsOf(0x7000_0202));
+                return border;
             case Scene.CellarStair: return SceneLibrary.Load("cellar").World;
             case Scene.Door: return SceneLibrary.Load("door").World;
             case Scene.Trunk: return SceneLibrary.Load("trunk").World;
