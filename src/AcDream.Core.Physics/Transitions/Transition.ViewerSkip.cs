@@ -21,7 +21,7 @@ internal sealed partial class Transition
     /// camera's start), offsets the check position by the unconstrained sub-step (adjust_offset changes
     /// nothing), inserts it into its cell, finds nothing, keeps the cell (find_cell_list lists only it and
     /// finds the centre in it) and is accepted: the check position becomes current. When the leading
-    /// sub-steps of a path starting in an indoor cell are proven so (<see cref="ViewerClearance"/>), this
+    /// sub-steps of a path starting in an indoor cell, or an outdoor one without a building, are proven so (<see cref="ViewerClearance"/>), this
     /// makes the very same sums of the very same sub-step and leaves the path, the cell list and the
     /// contacts as the walk would; the sub-steps from the first one that may touch something (and always
     /// the shorter last one) are walked. Nothing is skipped when unsure, when an observer watches, or when

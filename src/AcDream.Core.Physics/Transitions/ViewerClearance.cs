@@ -8,9 +8,9 @@ using AcDream.Core.Physics.World;
 namespace AcDream.Core.Physics.Transitions;
 
 /// <summary>
-/// How far along a straight stretch a viewer sphere that starts in an indoor cell provably touches nothing
-/// and stays that cell's only cell (not retail; the camera arm's skip, see <see cref="Transition"/>'s
-/// viewer sub-steps). The test is conservative: every obstacle's "might matter" zone is widened by
+/// How far along a straight stretch a viewer sphere that starts in a cell provably touches nothing and stays
+/// that cell's only cell (not retail; the camera arm's skip, see <see cref="Transition"/>'s viewer
+/// sub-steps): indoors here, outdoors in <see cref="ClearFractionOutdoors"/>. The test is conservative: every obstacle's "might matter" zone is widened by
 /// <see cref="Margin"/> (far above float rounding of the coordinates and of the walked sub-steps' sums),
 /// and any doubt shortens the stretch. For each sphere centre on the cleared part of the segment:
 /// <list type="bullet">
