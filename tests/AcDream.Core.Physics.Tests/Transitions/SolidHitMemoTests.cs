@@ -22,10 +22,23 @@ public class SolidHitMemoTests
     /// real with the memo forgotten, is Collided, as the memo says.
     /// </summary>
     [Fact]
-    public void FrontHit_IsRemembered_AndTheRealPlacementTestAgrees()
+    public void FrontHit_IsRemembered_AndTheRealPlacementTestAgrees() =>
+        AssertRememberedAndTheRealPlacementTestAgrees(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0));
+
+    /// <summary>
+    /// Retail quirk: a polygon grazed from behind (moving away from the +X face, x 1.2 → 1.3) still counts as
+    /// a hit and is remembered; the real placement test there is Collided too.
+    /// </summary>
+    [Fact]
+    public void GrazedFromBehind_IsRemembered_AndTheRealPlacementTestAgrees() =>
+        AssertRememberedAndTheRealPlacementTestAgrees(new Vector3(1.2f, 0, 0), new Vector3(1.3f, 0, 0));
+
+    // A move's test (not in contact) from `from` to `to` hits the box (a step-up candidate); the hit is known
+    // only to a placement insert, and the real placement test there, with the memo forgotten, is Collided.
+    private static void AssertRememberedAndTheRealPlacementTestAgrees(Vector3 from, Vector3 to)
     {
         var tree = BoxFixtures.SolidBox(out _);
-        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(from, to, 0.5f);
         var path = t.SpherePath;
         Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 1f, Owner));
         Assert.False(path.KnownSolidHit(Owner, Space, 1f)); // a move's insert is not a placement
@@ -34,23 +47,6 @@ public class SolidHitMemoTests
 
         path.SolidHit.Forget();
         Assert.False(path.KnownSolidHit(Owner, Space, 1f));
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, t, 1f));
-    }
-
-    /// <summary>
-    /// Retail quirk: a polygon grazed from behind (moving away from the +X face, x 1.2 → 1.3) still counts as
-    /// a hit and is remembered; the real placement test there is Collided too.
-    /// </summary>
-    [Fact]
-    public void GrazedFromBehind_IsRemembered_AndTheRealPlacementTestAgrees()
-    {
-        var tree = BoxFixtures.SolidBox(out _);
-        var t = BoxFixtures.MakeTransition(new Vector3(1.2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
-        var path = t.SpherePath;
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 1f, Owner));
-        path.InsertType = InsertType.Placement;
-        Assert.True(path.KnownSolidHit(Owner, Space, 1f));
-        path.SolidHit.Forget();
         Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, t, 1f));
     }
 
