@@ -218,7 +218,14 @@ public static class ReferenceToi
         {
             if (polygon.Sides == PolygonSides.Single)
             {
-                if (ray || !(vn > 0f))
+                // A sweep that still ends behind the plane (s0 + vn < 0) cannot meet the front, and returning
+                // here is exact, not an approximation of the edge and corner rule below (s0 + t·vn ≥ 0): Segment
+                // and Point report only t in [0, 1] (t < 0, t > 1 and NaN are refused), and with vn > 0 the
+                // rounded product t·vn is at most vn (the exact product is, and rounding is monotone and keeps
+                // vn), so the rounded s0 + t·vn is at most the rounded s0 + vn, which is negative (also when the
+                // JIT fuses the multiply and add). Without it, the far faces of a closed solid a mover walks
+                // at (the door's slab) had their edges and corners solved on every sweep.
+                if (ray || !(vn > 0f) || s0 + vn < 0f)
                     return false;
                 behind = true;
             }
