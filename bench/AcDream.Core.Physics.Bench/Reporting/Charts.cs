@@ -21,6 +21,10 @@ public static class Charts
         multiplot.Layout = new ScottPlot.MultiplotLayouts.Columns();
         var error = multiplot.GetPlot(0);
         var penetration = multiplot.GetPlot(1);
+        var logs = results.Select(r => Math.Log10(Math.Max(1, r.Timing.MixNs))).ToArray();
+        double left = logs.Min() - 0.08, right = logs.Max() + 0.22;
+        var errorLabels = new LabelPlacer(left, right, results.Max(r => r.Accuracy.FrameError.P99 * 1000));
+        var depthLabels = new LabelPlacer(left, right, Math.Max(PhysicsConstants.Epsilon * 1000, results.Max(r => r.Accuracy.MaxPenetration * 1000)));
         for (int i = 0; i < results.Count; i++)
         {
             var r = results[i];
@@ -28,9 +32,9 @@ public static class Charts
             var color = MethodColor(r.Method);
             var p99 = error.Add.Marker(x, r.Accuracy.FrameError.P99 * 1000, MarkerShape.FilledCircle, 10, color);
             error.Add.Marker(x, r.Accuracy.FrameError.Mean * 1000, MarkerShape.OpenCircle, 10, color);
-            Label(error, DoorMethods.Label(r.Method), x, r.Accuracy.FrameError.P99 * 1000, color, i);
+            errorLabels.Add(error, DoorMethods.Label(r.Method), x, r.Accuracy.FrameError.P99 * 1000, color);
             penetration.Add.Marker(x, r.Accuracy.MaxPenetration * 1000, MarkerShape.FilledSquare, 10, color);
-            Label(penetration, DoorMethods.Label(r.Method), x, r.Accuracy.MaxPenetration * 1000, color, i);
+            depthLabels.Add(penetration, DoorMethods.Label(r.Method), x, r.Accuracy.MaxPenetration * 1000, color);
         }
         error.Title("Position error per frame vs reference (filled: p99, open: mean)");
         error.YLabel("position error (mm)");
@@ -45,8 +49,6 @@ public static class Charts
         foreach (var plot in new[] { error, penetration })
         {
             plot.XLabel("approach mix: ns per frame (log scale; door.csv mix_ns_per_frame)");
-            var logs = results.Select(r => Math.Log10(Math.Max(1, r.Timing.MixNs))).ToArray();
-            double left = logs.Min() - 0.08, right = logs.Max() + 0.22;
             LogTicks(plot, left, right);
             plot.Axes.AutoScale();
             plot.Axes.SetLimitsX(left, right);
@@ -57,16 +59,39 @@ public static class Charts
     }
 
     /// <summary>
-    /// A method's label beside its point, staggered up and down so that neighbours stay readable; always
-    /// above a point at 0, which sits on the bottom of the axis (a label below it would be cut off).
+    /// Places each method's label beside its point where it covers no label placed before it: above the point
+    /// first, then below (unless the point sits near the bottom of the axis, where a label below would be cut),
+    /// then higher above. Label boxes are estimated in the panel's pixels (1600 × 650 image, two panels).
     /// </summary>
-    private static void Label(Plot plot, string text, double x, double y, Color color, int index)
+    private sealed class LabelPlacer(double left, double right, double top)
     {
-        var label = plot.Add.Text(text, x, y);
-        label.LabelFontColor = color;
-        label.LabelFontSize = 13;
-        label.OffsetX = 8;
-        label.OffsetY = index % 2 == 0 || y <= 0 ? -18 : 4;
+        private const double PanelWidthPx = 700, PanelHeightPx = 520, CharWidthPx = 7.5, HeightPx = 16;
+        private static readonly double[] Offsets = [-18, 4, -34, 20, -50];
+        private readonly List<(double X0, double X1, double Y0, double Y1)> _placed = [];
+
+        public void Add(Plot plot, string text, double x, double y, Color color)
+        {
+            double px = (x - left) / (right - left) * PanelWidthPx + 8;
+            double py = PanelHeightPx - y / (top * 1.1) * PanelHeightPx;
+            double width = text.Length * CharWidthPx;
+            double chosen = Offsets[0];
+            foreach (double offset in Offsets)
+            {
+                var box = (px, px + width, py + offset, py + offset + HeightPx);
+                bool cut = box.Item3 < 0 || box.Item4 > PanelHeightPx;
+                if (!cut && !_placed.Any(b => b.X0 < box.Item2 && box.px < b.X1 && b.Y0 < box.Item4 && box.Item3 < b.Y1))
+                {
+                    chosen = offset;
+                    break;
+                }
+            }
+            _placed.Add((px, px + width, py + chosen, py + chosen + HeightPx));
+            var label = plot.Add.Text(text, x, y);
+            label.LabelFontColor = color;
+            label.LabelFontSize = 13;
+            label.OffsetX = 8;
+            label.OffsetY = (float)chosen;
+        }
     }
 
     /// <summary>

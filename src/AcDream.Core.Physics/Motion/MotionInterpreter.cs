@@ -29,16 +29,9 @@ internal sealed class MotionInterpreter
         public Vector3 Velocity;
     }
 
-    private struct PendingMotion
-    {
-        public uint Motion;
-        public MotionError JumpError;
-    }
-
     private readonly MotionTableManager _manager;
     private readonly IMotionSkills? _skills;
-    private PendingMotion[] _pending = new PendingMotion[8];
-    private int _pendingCount;
+    private readonly PendingQueue<(uint Motion, MotionError JumpError)> _pending = new();
 
     public BodyView Body;
     public RawMotionState Raw = RawMotionState.Default;
@@ -51,17 +44,9 @@ internal sealed class MotionInterpreter
     public bool Autonomous;
 
     // The pending motions, for a snapshot (read, and replaced whole by a load).
-    internal int PendingCount => _pendingCount;
-    internal (uint Motion, MotionError JumpError) PendingAt(int i) => (_pending[i].Motion, _pending[i].JumpError);
-    internal void RestorePending(ReadOnlySpan<(uint Motion, MotionError JumpError)> items)
-    {
-        if (_pending.Length < items.Length)
-            _pending = new PendingMotion[items.Length];
-        for (int i = 0; i < items.Length; i++)
-            _pending[i] = new PendingMotion { Motion = items[i].Motion, JumpError = items[i].JumpError };
-        Array.Clear(_pending, items.Length, _pending.Length - items.Length);
-        _pendingCount = items.Length;
-    }
+    internal int PendingCount => _pending.Count;
+    internal (uint Motion, MotionError JumpError) PendingAt(int i) => _pending[i];
+    internal void RestorePending(ReadOnlySpan<(uint Motion, MotionError JumpError)> items) => _pending.Restore(items);
 
     public MotionInterpreter(MotionTableManager manager, IMotionSkills? skills)
     {
@@ -477,7 +462,7 @@ internal sealed class MotionInterpreter
         if (Body.Gravity && !(Body.Contact && Body.OnWalkable))
             return MotionError.CantJumpWhileInTheAir;
         // Retail reads the queue's head whenever there is one (CMotionInterp.c:646-697; ACE only with two or more).
-        if (_pendingCount > 0 && _pending[0].JumpError != MotionError.None)
+        if (_pending.Count > 0 && _pending[0].JumpError != MotionError.None)
             return _pending[0].JumpError;
         var error = JumpChargeIsAllowed();
         if (error == MotionError.None)
@@ -530,20 +515,12 @@ internal sealed class MotionInterpreter
 
     // ---- the queue of motions waiting for their animations ----
 
-    private void AddToQueue(uint motion, MotionError jumpError)
-    {
-        if (_pendingCount == _pending.Length)
-            Array.Resize(ref _pending, _pending.Length * 2);
-        _pending[_pendingCount++] = new PendingMotion { Motion = motion, JumpError = jumpError };
-    }
+    private void AddToQueue(uint motion, MotionError jumpError) => _pending.Add((motion, jumpError));
 
     /// <summary>CMotionInterp::MotionDone: the oldest queued motion is done.</summary>
     public void MotionDone(bool success)
     {
         // (For an action retail also drops it from both states' action lists, which are not kept here.)
-        if (_pendingCount == 0)
-            return;
-        _pendingCount--;
-        Array.Copy(_pending, 1, _pending, 0, _pendingCount);
+        _pending.RemoveFirst();
     }
 }

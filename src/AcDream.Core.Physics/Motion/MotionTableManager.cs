@@ -10,16 +10,9 @@ namespace AcDream.Core.Physics.Motion;
 /// </summary>
 internal sealed class MotionTableManager
 {
-    private struct Pending
-    {
-        public uint Motion;
-        public uint AnimCount;
-    }
-
     private readonly MotionTable _table;
     private readonly Sequence _sequence;
-    private Pending[] _pending = new Pending[8];
-    private int _pendingCount;
+    private readonly PendingQueue<(uint Motion, uint AnimCount)> _pending = new();
     private uint _animationCounter;
 
     public MotionTableManager(MotionTable table, Sequence sequence)
@@ -31,17 +24,12 @@ internal sealed class MotionTableManager
     public MotionState State { get; } = new();
 
     // The pending motions and the animation counter, for a snapshot (read, and replaced whole by a load).
-    internal int PendingCount => _pendingCount;
+    internal int PendingCount => _pending.Count;
     internal uint AnimationCounter => _animationCounter;
-    internal (uint Motion, uint AnimCount) PendingAt(int i) => (_pending[i].Motion, _pending[i].AnimCount);
+    internal (uint Motion, uint AnimCount) PendingAt(int i) => _pending[i];
     internal void RestorePending(ReadOnlySpan<(uint Motion, uint AnimCount)> items, uint animationCounter)
     {
-        if (_pending.Length < items.Length)
-            _pending = new Pending[items.Length];
-        for (int i = 0; i < items.Length; i++)
-            _pending[i] = new Pending { Motion = items[i].Motion, AnimCount = items[i].AnimCount };
-        Array.Clear(_pending, items.Length, _pending.Length - items.Length);
-        _pendingCount = items.Length;
+        _pending.Restore(items);
         _animationCounter = animationCounter;
     }
 
@@ -89,10 +77,10 @@ internal sealed class MotionTableManager
     /// <summary>MotionTableManager::AnimationDone: a link animation ended; motions whose animations are all done complete.</summary>
     public void AnimationDone(bool success)
     {
-        if (_pendingCount == 0)
+        if (_pending.Count == 0)
             return;
         _animationCounter++;
-        while (_pendingCount > 0)
+        while (_pending.Count > 0)
         {
             var entry = _pending[0];
             if (entry.AnimCount > _animationCounter)
@@ -101,22 +89,22 @@ internal sealed class MotionTableManager
                 State.ActionCount--;
             Interpreter?.MotionDone(success);
             _animationCounter -= entry.AnimCount;
-            RemoveFirstPending();
+            _pending.RemoveFirst();
         }
-        if (_animationCounter != 0 && _pendingCount == 0)
+        if (_animationCounter != 0 && _pending.Count == 0)
             _animationCounter = 0;
     }
 
     /// <summary>MotionTableManager::CheckForCompletedMotions (UseTime): motions that needed no animation complete.</summary>
     public void CheckForCompletedMotions()
     {
-        while (_pendingCount > 0 && _pending[0].AnimCount == 0)
+        while (_pending.Count > 0 && _pending[0].AnimCount == 0)
         {
             uint motion = _pending[0].Motion;
             if ((motion & MotionCommandMask.Action) != 0 && State.ActionCount > 0)
                 State.ActionCount--;
             Interpreter?.MotionDone(true);
-            RemoveFirstPending();
+            _pending.RemoveFirst();
         }
     }
 
@@ -125,22 +113,14 @@ internal sealed class MotionTableManager
     {
         _sequence.RemoveAllLinkAnimations();
         // Each call raises the animation counter by one, so every entry completes in the end.
-        while (_pendingCount > 0)
+        while (_pending.Count > 0)
             AnimationDone(false);
     }
 
     private void AddToQueue(uint motion, uint count)
     {
-        if (_pendingCount == _pending.Length)
-            Array.Resize(ref _pending, _pending.Length * 2);
-        _pending[_pendingCount++] = new Pending { Motion = motion, AnimCount = count };
+        _pending.Add((motion, count));
         RemoveRedundantLinks();
-    }
-
-    private void RemoveFirstPending()
-    {
-        _pendingCount--;
-        Array.Copy(_pending, 1, _pending, 0, _pendingCount);
     }
 
     // MotionTableManager::remove_redundant_links: a motion queued again while its earlier entry's links are still
@@ -148,7 +128,7 @@ internal sealed class MotionTableManager
     // Retail looks only at the newest entry with animations (CMTableManager.c:325-393); ACE goes on to older ones.
     private void RemoveRedundantLinks()
     {
-        for (int i = _pendingCount - 1; i >= 0; i--)
+        for (int i = _pending.Count - 1; i >= 0; i--)
         {
             var entry = _pending[i];
             if (entry.AnimCount == 0)
@@ -188,7 +168,7 @@ internal sealed class MotionTableManager
     private void TruncateAnimationList(int index)
     {
         uint total = 0;
-        for (int i = _pendingCount - 1; i > index; i--)
+        for (int i = _pending.Count - 1; i > index; i--)
         {
             total += _pending[i].AnimCount;
             _pending[i].AnimCount = 0;

@@ -20,7 +20,8 @@ namespace AcDream.Core.Physics.Snapshots;
 /// state of an <see cref="ObjectMotion"/> (CMotionInterp, MotionTableManager and CSequence; animations by id,
 /// resolved in the same <see cref="MotionTable"/> on load), 5 the objects'
 /// places in their cells' lists (the order retail tests a cell's objects in, which moves and removals change:
-/// CObjCell::remove_shadow_object moves the last object into the hole). A reader skips sections whose tag it does not know,
+/// CObjCell::remove_shadow_object moves the last object into the hole): per object a count (u8; 255: a u32
+/// count follows), then each cell id and place (u32 each). A reader skips sections whose tag it does not know,
 /// so a newer writer's extra sections are read past; a missing section it needs is an error.</para>
 /// <para>Reading never reads past the bytes given (at most <see cref="MaxBytes"/>), checks every float is finite
 /// and every enum known, and reports a bad snapshot with an <see cref="InvalidDataException"/> naming the field and
@@ -30,6 +31,9 @@ public static class Snapshot
 {
     /// <summary>The format version this library writes and reads.</summary>
     public const ushort Version = 1;
+
+    // In section 5, a count byte of this value is followed by the count as a u32.
+    private const byte ManyCells = byte.MaxValue;
 
     /// <summary>The largest snapshot read, in bytes (64 MiB: about 1.3 million objects).</summary>
     public const int MaxBytes = 64 << 20;
@@ -147,8 +151,18 @@ public static class Snapshot
         {
             if (!Saved(o))
                 continue;
-            int n = Math.Min(o.Cells.Count, byte.MaxValue);
-            w.Byte((byte)n);
+            // The count in one byte; 255 says a u32 count follows (an object as large as a few hundred metres is
+            // listed in more than 254 land cells, and every place must come back for the test order to).
+            int n = o.Cells.Count;
+            if (n < ManyCells)
+            {
+                w.Byte((byte)n);
+            }
+            else
+            {
+                w.Byte(ManyCells);
+                w.U32((uint)n);
+            }
             for (int k = 0; k < n; k++)
             {
                 w.U32(o.Cells[k]);
@@ -187,7 +201,13 @@ public static class Snapshot
                 order = new();
                 for (int i = 0; i < objects.Count; i++)
                 {
-                    int n = section.U8($"cellOrder[{i}].count");
+                    long n = section.U8($"cellOrder[{i}].count");
+                    if (n == ManyCells)
+                    {
+                        n = section.U32($"cellOrder[{i}].count");
+                        if (n > section.Remaining / 8)
+                            throw section.Fail($"cellOrder[{i}].count", $"{n} places do not fit in the {section.Remaining} bytes left");
+                    }
                     for (int k = 0; k < n; k++)
                     {
                         uint cell = section.U32($"cellOrder[{i}][{k}].cell");

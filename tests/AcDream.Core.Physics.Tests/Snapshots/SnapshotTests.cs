@@ -1,9 +1,11 @@
 using System.IO;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Snapshots;
 using AcDream.Core.Physics.Tests.Support;
+using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Snapshots;
 
@@ -177,5 +179,52 @@ public class SnapshotTests
         var target = TestGeometry.FlatWorld();
         Snapshot.LoadObjects(bytes, target, _ => setup);
         Assert.Equal([4u, 2u, 3u], Order(target, cell));
+    }
+
+    [Fact]
+    public void AnObjectListedInHundredsOfCells_GetsEveryPlaceBack()
+    {
+        // A BSP box 300 m across in the middle of a 3 x 3 landblock group is listed in some 324 land cells. In
+        // one of the last of them, two small objects were registered before it and the first removed, so that
+        // cell lists the box first (retail's removal moves the last entry into the hole): [box, B]. A restore
+        // registers B first, so only the box's saved place puts it back in front (red when a count over 254 is
+        // cut to 255).
+        var source = new PhysicsWorld();
+        var target = new PhysicsWorld();
+        for (uint bx = 0xA8; bx <= 0xAA; bx++)
+            for (uint by = 0xB3; by <= 0xB5; by++)
+            {
+                source.Cells.AddLandblock(Terrain.Flat(bx << 8 | by, 0f));
+                target.Cells.AddLandblock(Terrain.Flat(bx << 8 | by, 0f));
+            }
+        var small = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] };
+        var half = new Vector3(150f, 150f, 1f);
+        var box = new PhysicsSetup { Parts = [new SetupPart(new PhysicsModel(BspShapes.Box(-half, half)), Frame.Identity)] };
+        var corner = new Vector3(44f, 44f, 0.5f); // (236, 236) from the middle landblock's corner, in 0xA9B4's north-east neighbour
+        uint cornerCell = LandDefs.LandCellAt(0xAAB5, corner);
+        source.Objects.Register(1, small, new Position(cornerCell, corner));
+        source.Objects.Register(2, small, new Position(cornerCell, corner + new Vector3(1f, 0, 0)));
+        source.Objects.Register(3, box, new Position(LandDefs.LandCellAt(0xA9B4, new Vector3(96f, 96f, 2f)), new Vector3(96f, 96f, 2f)));
+        source.Objects.Unregister(1);
+        var cells = source.Objects.CellsOf(3);
+        Assert.True(cells.Count > 255, $"the box is listed in {cells.Count} cells");
+        Assert.True(cells.ToList().IndexOf(cornerCell) >= 255, $"the corner cell is place {cells.ToList().IndexOf(cornerCell)} of the box's list");
+        static uint[] Order(PhysicsWorld w, uint cell) => w.Objects.RowsInCell(cell).ToArray().Select(r => r.EntityId).Distinct().ToArray();
+        Assert.Equal([3u, 2u], Order(source, cornerCell));
+
+        var bytes = Snapshot.SaveObjects(source, s => s == box ? 1u : 2u);
+        Assert.Equal(2, Snapshot.LoadObjects(bytes, target, k => k == 1 ? box : small));
+        Assert.Equal(cells, target.Objects.CellsOf(3));
+        foreach (uint cell in cells)
+            Assert.Equal(Order(source, cell), Order(target, cell));
+
+        // The long count is checked against the bytes left before anything is read.
+        var escape = new byte[] { 0xFF }.Concat(BitConverter.GetBytes((uint)cells.Count)).ToArray();
+        int at = bytes.AsSpan().IndexOf(escape);
+        Assert.True(at > 0);
+        var tooMany = Patch(bytes, at + 1, BitConverter.GetBytes(1_000_000u));
+        var ex = Assert.Throws<InvalidDataException>(() => Snapshot.LoadObjects(tooMany, new PhysicsWorld(), k => k == 1 ? box : small));
+        Assert.Contains("cellOrder[", ex.Message);
+        Assert.Contains("1000000 places do not fit", ex.Message);
     }
 }
