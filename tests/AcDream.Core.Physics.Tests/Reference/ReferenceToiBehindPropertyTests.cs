@@ -1,6 +1,7 @@
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
 using Xunit.Abstractions;
+using static AcDream.Core.Physics.Tests.Reference.RandomSweeps;
 
 namespace AcDream.Core.Physics.Tests.Reference;
 
@@ -130,7 +131,7 @@ public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
         {
             int mode = rng.Next(4);
             float r = Radius(rng);
-            var far = rng.Next(3) == 0 ? new Vector3(Uniform(rng, -200f, 200f), Uniform(rng, -200f, 200f), Uniform(rng, -50f, 50f)) : Vector3.Zero;
+            var far = Far(rng);
             (Polygon polygon, Vector3 c, Vector3 d) = mode == 3 ? Ridge(rng, far, r) : Convex(rng, mode, far, r);
             if (!(Vector3.Dot(polygon.Plane.Normal, c - polygon.Vertices[0]) < 0f))
                 continue;
@@ -148,22 +149,10 @@ public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
 
     private static (Polygon, Vector3, Vector3) Convex(Random rng, int mode, Vector3 far, float r)
     {
-        var n = UnitVector(rng);
-        var u = Vector3.Normalize(Vector3.Cross(n, MathF.Abs(n.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX));
-        var w = Vector3.Cross(n, u);
-        var center = far + new Vector3(Uniform(rng, -5f, 5f), Uniform(rng, -5f, 5f), Uniform(rng, -5f, 5f));
-        int count = 3 + rng.Next(4);
-        float size = Uniform(rng, 0.2f, 3f);
-        var vertices = new Vector3[count];
-        float step = 2f * MathF.PI / count;
-        for (int k = 0; k < count; k++)
-        {
-            // Counter-clockwise about n: angles increase by less than a half turn, on a circle, so convex.
-            float angle = k * step + Uniform(rng, 0f, 0.6f * step);
-            vertices[k] = center + size * (MathF.Cos(angle) * u + MathF.Sin(angle) * w);
-        }
-        var polygon = new Polygon(vertices);
-        n = polygon.Plane.Normal;
+        var polygon = ConvexPolygon(rng, UnitVector(rng), far + new Vector3(Uniform(rng, -5f, 5f), Uniform(rng, -5f, 5f), Uniform(rng, -5f, 5f)));
+        var vertices = polygon.Vertices;
+        int count = vertices.Length;
+        var n = polygon.Plane.Normal;
         // A point near an edge or a corner, in the plane, then the end of the sweep off it.
         int e = rng.Next(count);
         var a = vertices[e];
@@ -226,17 +215,4 @@ public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
         v -= Vector3.Dot(v, n) * n;
         return v.LengthSquared() > 1e-6f ? Vector3.Normalize(v) : Vector3.Normalize(Vector3.Cross(n, Vector3.UnitX + Vector3.UnitY * 0.5f));
     }
-
-    private static Vector3 UnitVector(Random rng)
-    {
-        while (true)
-        {
-            var v = new Vector3(Uniform(rng, -1f, 1f), Uniform(rng, -1f, 1f), Uniform(rng, -1f, 1f));
-            float l = v.Length();
-            if (l > 0.1f && l <= 1f)
-                return v / l;
-        }
-    }
-
-    private static float Uniform(Random rng, float lo, float hi) => lo + (float)rng.NextDouble() * (hi - lo);
 }

@@ -1,6 +1,7 @@
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
 using Xunit.Abstractions;
+using static AcDream.Core.Physics.Tests.Reference.RandomSweeps;
 
 namespace AcDream.Core.Physics.Tests.Reference;
 
@@ -75,7 +76,7 @@ public class ReferenceToiEdgeReachPropertyTests(ITestOutputHelper output)
             1 or 2 => Uniform(rng, 0.1f, 0.6f),
             _ => Uniform(rng, 0.6f, 3f),
         };
-        var far = rng.Next(3) == 0 ? new Vector3(Uniform(rng, -200f, 200f), Uniform(rng, -200f, 200f), Uniform(rng, -50f, 50f)) : Vector3.Zero;
+        var far = Far(rng);
         Polygon polygon;
         bool axes = rng.Next(2) == 0;
         if (axes)
@@ -93,19 +94,7 @@ public class ReferenceToiEdgeReachPropertyTests(ITestOutputHelper output)
         }
         else
         {
-            var n = UnitVector(rng);
-            var u = Vector3.Normalize(Vector3.Cross(n, MathF.Abs(n.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX));
-            var w = Vector3.Cross(n, u);
-            int count = 3 + rng.Next(4);
-            float size = Uniform(rng, 0.2f, 3f);
-            var vertices = new Vector3[count];
-            float step = 2f * MathF.PI / count;
-            for (int k = 0; k < count; k++)
-            {
-                float angle = k * step + Uniform(rng, 0f, 0.6f * step);
-                vertices[k] = far + size * (MathF.Cos(angle) * u + MathF.Sin(angle) * w);
-            }
-            polygon = new Polygon(vertices);
+            polygon = ConvexPolygon(rng, UnitVector(rng), far);
         }
         var v = polygon.Vertices;
         int e = rng.Next(v.Length);
@@ -126,17 +115,4 @@ public class ReferenceToiEdgeReachPropertyTests(ITestOutputHelper output)
         float sign = rng.Next(2) == 0 ? -1f : 1f;
         return rng.Next(3) switch { 0 => new Vector3(sign, 0, 0), 1 => new Vector3(0, sign, 0), _ => new Vector3(0, 0, sign) };
     }
-
-    private static Vector3 UnitVector(Random rng)
-    {
-        while (true)
-        {
-            var v = new Vector3(Uniform(rng, -1f, 1f), Uniform(rng, -1f, 1f), Uniform(rng, -1f, 1f));
-            float l = v.Length();
-            if (l > 0.1f && l <= 1f)
-                return v / l;
-        }
-    }
-
-    private static float Uniform(Random rng, float lo, float hi) => lo + (float)rng.NextDouble() * (hi - lo);
 }
