@@ -48,7 +48,12 @@ internal static class BspQuery
     /// landing_z) and is Adjusted; a hit of sphere 1 sets the collision normal and is Collided.
     /// Retail quirk (acclient.c:361295): in the last two cases a polygon grazed from behind counts as a hit.
     /// </remarks>
-    public static TransitionState FindCollisions(BspTree tree, Transition transition, float scale)
+    /// <param name="tree">The tree.</param>
+    /// <param name="transition">The transition, its local-space spheres prepared for the tree.</param>
+    /// <param name="scale">The scale of the tree's space.</param>
+    /// <param name="owner">The placed model or env cell whose tree this is; when given, a hit of sphere 0 is
+    /// remembered for the placement test that may follow (<see cref="SolidHitMemo"/>).</param>
+    public static TransitionState FindCollisions(BspTree tree, Transition transition, float scale, object? owner = null)
     {
         ArgumentNullException.ThrowIfNull(tree);
         ArgumentNullException.ThrowIfNull(transition);
@@ -94,7 +99,12 @@ internal static class BspQuery
         if ((transition.ObjectInfo.State & ObjectInfoState.Contact) != 0)
         {
             if (BspNodeQuery.SphereIntersectsPoly(tree, 0, sphere0, movement, ref hitPolygon, ref contactPoint))
+            {
+                // The step-up's placement insert at this check position will test this tree again.
+                if (owner is not null)
+                    path.SolidHit.Remember(owner, path, scale);
                 return StepSphereUp(transition, hitPolygon!.Plane.Normal);
+            }
             if (twoSpheres)
             {
                 Polygon? hitPolygon1 = null;
@@ -123,6 +133,10 @@ internal static class BspQuery
 
         if (BspNodeQuery.SphereIntersectsPoly(tree, 0, sphere0, movement, ref hitPolygon, ref contactPoint) || hitPolygon is not null)
         {
+            // A polygon is set only when the precise test found it touching sphere 0 (also when grazed from
+            // behind); the step-up candidate's placement insert may test this tree again here.
+            if (owner is not null)
+                path.SolidHit.Remember(owner, path, scale);
             path.SetCollide(ToGlobal(path, hitPolygon!.Plane.Normal));
             path.WalkableAllowance = PhysicsConstants.LandingZ;
             return TransitionState.Adjusted;

@@ -43,12 +43,19 @@ internal static class ShapeSweep
     /// surfaces a mover could stand on (normal Z at least floor_z) count. True when it improved <paramref name="best"/>.
     /// </summary>
     public static bool Tree(BspTree tree, in Frame frame, Vector3 blockShift, float scale, Vector3 c, Vector3 d, float r,
+        bool walkableOnly, ref Best best) =>
+        // The frame's matrix once (Frame's own transforms rebuild it from the quaternion at each call).
+        Tree(tree, frame.Matrix, frame.Origin, blockShift, scale, c, d, r, walkableOnly, ref best);
+
+    /// <summary>
+    /// <see cref="Tree(BspTree, in Frame, Vector3, float, Vector3, Vector3, float, bool, ref Best)"/> with the frame
+    /// given as its rotation matrix (built from the frame's quaternion, as an indoor cell keeps it) and origin.
+    /// </summary>
+    public static bool Tree(BspTree tree, in RotationMatrix matrix, Vector3 origin, Vector3 blockShift, float scale, Vector3 c, Vector3 d, float r,
         bool walkableOnly, ref Best best)
     {
         float inv = 1f / scale;
-        // The frame's matrix once (Frame's own transforms rebuild it from the quaternion at each call).
-        var matrix = frame.Matrix;
-        var lc = matrix.FrameToLocal(c - blockShift, frame.Origin) * inv;
+        var lc = matrix.FrameToLocal(c - blockShift, origin) * inv;
         var ld = matrix.FrameToLocal(d) * inv;
         float lr = r * inv;
         var end = lc + ld * best.Fraction;

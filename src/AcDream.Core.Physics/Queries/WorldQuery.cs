@@ -255,7 +255,7 @@ public sealed class WorldQuery
                         (kind, cellId, objectId) = (SurfaceKind.Building, land.Id, 0u);
                 }
                 else if (cell is EnvCell { PhysicsBsp: { } bsp } env
-                    && ShapeSweep.Tree(bsp, env.Position.Frame, shift, 1f, c, d, r, walkableOnly, ref best))
+                    && ShapeSweep.Tree(bsp, env.Matrix, env.Position.Frame.Origin, shift, 1f, c, d, r, walkableOnly, ref best))
                 {
                     (kind, cellId, objectId) = (SurfaceKind.EnvCell, env.Id, 0u);
                 }

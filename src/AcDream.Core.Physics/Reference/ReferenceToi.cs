@@ -218,7 +218,14 @@ public static class ReferenceToi
         {
             if (polygon.Sides == PolygonSides.Single)
             {
-                if (ray || !(vn > 0f))
+                // A sweep that still ends behind the plane (s0 + vn < 0) cannot meet the front, and returning
+                // here is exact, not an approximation of the edge and corner rule below (s0 + t·vn ≥ 0): Segment
+                // and Point report only t in [0, 1] (t < 0, t > 1 and NaN are refused), and with vn > 0 the
+                // rounded product t·vn is at most vn (the exact product is, and rounding is monotone and keeps
+                // vn), so the rounded s0 + t·vn is at most the rounded s0 + vn, which is negative (also when the
+                // JIT fuses the multiply and add). Without it, the far faces of a closed solid a mover walks
+                // at (the door's slab) had their edges and corners solved on every sweep.
+                if (ray || !(vn > 0f) || s0 + vn < 0f)
                     return false;
                 behind = true;
             }
@@ -266,12 +273,20 @@ public static class ReferenceToi
                 }
             }
         }
+        if (ray)
+            return Found(best, bestNormal, feature, out hit);
         var v = polygon.Vertices;
         bool singleSided = polygon.Sides == PolygonSides.Single;
-        for (int i = 0; i < v.Length && !ray; i++)
+        // An edge or a corner is solved only when its box meets the box the centre sweeps until the best
+        // contact so far (every contact that could replace it lies there): after a face contact, or beside
+        // a far edge, most are not.
+        EdgeReach(c, d, r, MathF.Min(best, 1f), polygon, out var reachMin, out var reachMax);
+        for (int i = 0; i < v.Length; i++)
         {
             var a = v[i];
             var b = v[(i + 1) % v.Length];
+            if (!EdgeMeetsBox(a, b, reachMin, reachMax))
+                continue;
             if (Segment(c, d, r, a, b, out float te, out var ne) && te < best && (!singleSided || s0 + te * vn >= 0f))
             {
                 best = te;
@@ -285,11 +300,38 @@ public static class ReferenceToi
                 feature = ReferenceFeature.Vertex;
             }
         }
-        if (feature == ReferenceFeature.None)
-            return false;
-        hit = new ReferenceHit(best, bestNormal, feature);
-        return true;
+        return Found(best, bestNormal, feature, out hit);
     }
+
+    private static bool Found(float time, Vector3 normal, ReferenceFeature feature, out ReferenceHit hit)
+    {
+        hit = feature == ReferenceFeature.None ? default : new ReferenceHit(time, normal, feature);
+        return feature != ReferenceFeature.None;
+    }
+
+    /// <summary>
+    /// The box that holds the centre of every edge or corner contact <see cref="Segment"/> and <see cref="Point"/>
+    /// report at a time up to <paramref name="limit"/>, widened by the radius: the centre then lies on the sweep
+    /// from <paramref name="c"/> to <c>c + limit·d</c>, within the radius of a point of the edge (its perpendicular
+    /// offset is a root of the distance equation and its place along the line is checked within the segment). The
+    /// margin — a centimetre plus 1e-5 of the largest coordinate, displacement and radius — is far above the
+    /// rounding of those roots and of the box (a few float steps of the same magnitudes), so an edge whose box
+    /// misses this one has no contact to offer: skipping it changes no answer.
+    /// </summary>
+    internal static void EdgeReach(Vector3 c, Vector3 d, float r, float limit, Polygon polygon, out Vector3 min, out Vector3 max)
+    {
+        var end = c + limit * d;
+        float largest = MathF.Max(MaxAbs(polygon.BoxMin), MaxAbs(polygon.BoxMax));
+        var grow = new Vector3(r + 0.01f + 1e-5f * (largest + MaxAbs(c) + MaxAbs(d) + r));
+        min = Vector3.Min(c, end) - grow;
+        max = Vector3.Max(c, end) + grow;
+    }
+
+    /// <summary>Whether the box of the edge from <paramref name="a"/> to <paramref name="b"/> meets the box from <paramref name="min"/> to <paramref name="max"/>.</summary>
+    internal static bool EdgeMeetsBox(Vector3 a, Vector3 b, Vector3 min, Vector3 max) =>
+        MathF.Max(a.X, b.X) >= min.X && MathF.Min(a.X, b.X) <= max.X
+        && MathF.Max(a.Y, b.Y) >= min.Y && MathF.Min(a.Y, b.Y) <= max.Y
+        && MathF.Max(a.Z, b.Z) >= min.Z && MathF.Min(a.Z, b.Z) <= max.Z;
 
     /// <summary>
     /// How much nearer than its plane a point can be to a polygon, with rounding: a vertex may lie off the plane

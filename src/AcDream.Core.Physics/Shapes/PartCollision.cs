@@ -44,11 +44,15 @@ internal static class PartCollision
 
     /// <summary>
     /// Expresses the path in the part's space, and when a mover sphere touches the model's bounding
-    /// sphere, runs the BSP query (the placement insert for an initial placement).
+    /// sphere, runs the BSP query (the placement insert for an initial placement). A placement test whose
+    /// answer is known (<see cref="SpherePath.KnownSolidHit"/>) is answered without either; the local-space
+    /// spheres it would have prepared are read only by the test that prepares them.
     /// </summary>
     public static TransitionState Collide(Transition transition, PhysicsModel model, in Position partPosition, float scale)
     {
         var path = transition.SpherePath;
+        if (path.KnownSolidHit(model, partPosition, scale))
+            return TransitionState.Collided;
         path.CacheLocalSpaceSphere(partPosition, scale);
         var bounds = model.BoundingSphere;
         for (int i = 0; i < path.NumSphere; i++)
@@ -59,7 +63,7 @@ internal static class PartCollision
             {
                 return path.InsertType == InsertType.InitialPlacement
                     ? BspQuery.PlacementInsert(model.Bsp, transition)
-                    : BspQuery.FindCollisions(model.Bsp, transition, scale);
+                    : BspQuery.FindCollisions(model.Bsp, transition, scale, model);
             }
         }
         return TransitionState.OK;

@@ -106,6 +106,18 @@ internal sealed class SpherePath
     public bool NegPolyHit;
     /// <summary>Placement may slide out of overlaps.</summary>
     public bool PlacementAllowsSliding = true;
+    /// <summary>The last BSP found touching sphere 0, whose placement test is then known (see <see cref="SolidHitMemo"/>).</summary>
+    public SolidHitMemo SolidHit;
+
+    /// <summary>
+    /// True when a placement insert's test of the BSP of <paramref name="owner"/> (placed at
+    /// <paramref name="space"/>, scale <paramref name="scale"/>) is known to be Collided: the insert is a
+    /// placement, whose BSP test is the solid test, and sphere 0 at the check position was found touching
+    /// a polygon of that tree (<see cref="SolidHitMemo"/>).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public bool KnownSolidHit(object owner, in Position space, float scale) =>
+        InsertType == InsertType.Placement && SolidHit.Holds(owner, space, scale, CheckPos);
 
     /// <summary>
     /// Clears the per-move state, ready for a new transition: the flags, cells, walkable and step fields.
@@ -135,6 +147,7 @@ internal sealed class SpherePath
         WalkableCheckPos = default;
         Walkable = null;
         PlacementAllowsSliding = true;
+        SolidHit.Forget();
         // What is remembered for a position (the current spheres, the object tests' centres) stays: it
         // depends on the position and the spheres only, and InitSphere forgets it when the spheres change.
     }
@@ -196,6 +209,7 @@ internal sealed class SpherePath
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
         // Everything remembered for a position depends on the spheres too.
         _lastCurrent.Valid = _curFresh.Valid = _checkFresh.Valid = false;
+        SolidHit.Forget();
     }
 
     /// <summary>Moves the check position and its spheres by an offset.</summary>
@@ -275,6 +289,15 @@ internal sealed class SpherePath
             return;
         }
         ref readonly var matrix = ref _moverMatrix.LanesOf(CheckPos.Frame);
+        if (_checkFresh.Valid && Position.SameBits(CheckPos, _checkFresh.For))
+        {
+            // The centres were computed for this very position already (an object test there, or a step-up
+            // restoring the position it left): the same expression on the same inputs.
+            for (int i = 0; i < NumSphere; i++)
+                GlobalSphere[i] = new Sphere(_checkFresh.Centres[i], LocalSphere[i].Radius);
+            GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
+            return;
+        }
         for (int i = 0; i < NumSphere; i++)
         {
             GlobalSphere[i].Radius = LocalSphere[i].Radius;

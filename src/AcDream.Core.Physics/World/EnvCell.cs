@@ -115,10 +115,18 @@ public sealed class EnvCell : Cell
         path.ObstructionEthereal = false;
         if (PhysicsBsp is null)
             return TransitionState.OK;
-        path.CacheLocalSpaceSphere(Position, 1.0f);
-        var state = path.InsertType == InsertType.InitialPlacement
-            ? BspQuery.PlacementInsert(PhysicsBsp, transition)
-            : BspQuery.FindCollisions(PhysicsBsp, transition, 1.0f);
+        TransitionState state;
+        // A placement test known to be Collided (SpherePath.KnownSolidHit: the wall a step-up just failed
+        // against) is not run again.
+        if (path.KnownSolidHit(this, Position, 1.0f))
+            state = TransitionState.Collided;
+        else
+        {
+            path.CacheLocalSpaceSphere(Position, 1.0f);
+            state = path.InsertType == InsertType.InitialPlacement
+                ? BspQuery.PlacementInsert(PhysicsBsp, transition)
+                : BspQuery.FindCollisions(PhysicsBsp, transition, 1.0f, this);
+        }
         if (state != TransitionState.OK && (transition.ObjectInfo.State & ObjectInfoState.Contact) == 0)
             transition.CollisionInfo.CollidedWithEnvironment = true;
         return state;
