@@ -66,8 +66,8 @@ public static class DoorJob
             Progress($"accuracy {DoorMethods.Label(method),-10}: {summary.Frames} frames, frame error p99 {summary.FrameError.P99 * 1000:0.###} mm, max penetration {summary.MaxPenetration * 1000:0.###} mm, tunnelling {summary.TunnelFrames}, stuck {summary.StuckFrames}, jitter {summary.JitterFrames}, NaN {summary.NaNFrames}");
         }
 
-        Progress("warming up every method's timed workloads (JIT tiering)");
-        Warmup(scene, 1.5);
+        Progress("warming up every method's timed workloads until the JIT has compiled nothing new for a second");
+        Progress($"warmed up in {Warmup(scene, results):0.0} s");
         foreach (var r in results)
         {
             TimeMethod(scene, r);
@@ -84,9 +84,19 @@ public static class DoorJob
             rows.Add((objects, false, false));
         rows.Add((100, false, true));
         rows.Add((1_000, false, true));
-        foreach (var (objects, nearShare, allIn) in rows)
+        // Every row's world is built and warmed before the first is timed: the props' paths (the cull, the
+        // object tests) are code the door alone never runs, and were timed in first-tier code in the first rows.
+        var scaleSteppers = rows.ConvertAll(r => new DoorStepper(DoorScene.Create(r.Objects, nearShare: r.NearShare, allInDoorCell: r.AllIn), DoorMethod.Retail));
+        RowTimer.WarmUntilJitSettles(() =>
         {
-            var stepper = new DoorStepper(DoorScene.Create(objects, nearShare: nearShare, allInDoorCell: allIn), DoorMethod.Retail);
+            foreach (var s in scaleSteppers)
+                for (int i = 0; i < 50; i++)
+                    s.Resolve(DoorWorkloads.TransitionStart, DoorWorkloads.TransitionTarget);
+        });
+        for (int k = 0; k < rows.Count; k++)
+        {
+            var (objects, nearShare, allIn) = rows[k];
+            var stepper = scaleSteppers[k];
             var start = DoorWorkloads.TransitionStart;
             var target = DoorWorkloads.TransitionTarget;
             double ns = Measure(n => { for (int i = 0; i < n; i++) stepper.Resolve(start, target); }, 1, 0.3);
@@ -125,21 +135,32 @@ public static class DoorJob
         return 0;
     }
 
-    /// <summary>Runs every method's timed workloads for a while so the JIT has promoted the hot code to its final tier.</summary>
-    private static void Warmup(DoorScene scene, double seconds)
+    /// <summary>
+    /// Runs every method's timed workloads until the JIT has promoted the hot code to its final tier (it
+    /// compiles nothing new for a second); returns the seconds taken. A fixed warm-up left rows timed in
+    /// first-tier code on a loaded machine, and even on a quiet one for code only the later rows run.
+    /// </summary>
+    private static double Warmup(DoorScene scene, List<MethodResult> results)
     {
-        var steppers = Array.ConvertAll(DoorMethods.All, m => new DoorStepper(scene, m));
+        var steppers = results.ConvertAll(r => new DoorStepper(scene, r.Method));
+        // Each method's approach mix too: its frames (fast ones, the props beyond the door) run code the
+        // three short workloads do not.
+        var mixes = results.ConvertAll(r => r.Outcomes.SelectMany(o => o.Workload ?? []).ToArray());
         var start = DoorWorkloads.TransitionStart;
         var target = DoorWorkloads.TransitionTarget;
-        var clock = Stopwatch.StartNew();
-        while (clock.Elapsed.TotalSeconds < seconds)
-            foreach (var stepper in steppers)
+        return RowTimer.WarmUntilJitSettles(() =>
+        {
+            for (int m = 0; m < steppers.Count; m++)
             {
+                var stepper = steppers[m];
                 for (int i = 0; i < 50; i++)
                     stepper.Resolve(start, target);
                 DoorWorkloads.Approach(stepper);
                 DoorWorkloads.SlideNorthEast(stepper);
+                foreach (var (state, goal) in mixes[m])
+                    stepper.Resolve(state, goal);
             }
+        }).Seconds;
     }
 
     private static void TimeMethod(DoorScene scene, MethodResult result)

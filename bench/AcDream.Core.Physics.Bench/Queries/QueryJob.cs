@@ -43,7 +43,7 @@ public static class QueryJob
         var workloads = new QueryWorkloads();
         int count = QueryWorkloads.Names.Length, resolve = count - 1;
         float sink = 0;
-        var (warmSeconds, compiled) = WarmUntilJitSettles(() =>
+        var (warmSeconds, compiled) = RowTimer.WarmUntilJitSettles(() =>
         {
             for (int w = 0; w < count; w++)
                 for (int i = 0; i < 200; i++)
@@ -85,31 +85,5 @@ public static class QueryJob
         File.WriteAllText(path, table.ToString());
         Console.WriteLine($"written to {path}");
         return 0;
-    }
-
-    /// <summary>
-    /// Runs <paramref name="round"/> until the JIT has compiled no method for a full second of rounds (at
-    /// least three rounds, at most 60 s); returns the time taken and the methods compiled meanwhile.
-    /// </summary>
-    internal static (double Seconds, long Compiled) WarmUntilJitSettles(Action round)
-    {
-        var total = Stopwatch.StartNew();
-        long start = JitInfo.GetCompiledMethodCount(), last = start;
-        var quiet = Stopwatch.StartNew();
-        int quietRounds = 0;
-        while (total.Elapsed.TotalSeconds < 60)
-        {
-            round();
-            long now = JitInfo.GetCompiledMethodCount();
-            if (now != last)
-            {
-                last = now;
-                quiet.Restart();
-                quietRounds = 0;
-            }
-            else if (++quietRounds >= 3 && quiet.Elapsed.TotalSeconds >= 1)
-                break;
-        }
-        return (total.Elapsed.TotalSeconds, last - start);
     }
 }

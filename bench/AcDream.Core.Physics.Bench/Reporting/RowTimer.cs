@@ -1,5 +1,6 @@
 using System;
 using System.Diagnostics;
+using System.Runtime;
 
 namespace AcDream.Core.Physics.Bench.Reporting;
 
@@ -44,5 +45,31 @@ public static class RowTimer
             results[r] = (best[r], (GC.GetAllocatedBytesForCurrentThread() - before) / 1000.0);
         }
         return results;
+    }
+
+    /// <summary>
+    /// Runs <paramref name="round"/> until the JIT has compiled no method for a full second of rounds (at
+    /// least three rounds, at most 60 s); returns the time taken and the methods compiled meanwhile.
+    /// </summary>
+    public static (double Seconds, long Compiled) WarmUntilJitSettles(Action round)
+    {
+        var total = Stopwatch.StartNew();
+        long start = JitInfo.GetCompiledMethodCount(), last = start;
+        var quiet = Stopwatch.StartNew();
+        int quietRounds = 0;
+        while (total.Elapsed.TotalSeconds < 60)
+        {
+            round();
+            long now = JitInfo.GetCompiledMethodCount();
+            if (now != last)
+            {
+                last = now;
+                quiet.Restart();
+                quietRounds = 0;
+            }
+            else if (++quietRounds >= 3 && quiet.Elapsed.TotalSeconds >= 1)
+                break;
+        }
+        return (total.Elapsed.TotalSeconds, last - start);
     }
 }

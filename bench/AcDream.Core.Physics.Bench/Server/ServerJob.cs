@@ -50,9 +50,9 @@ public static class ServerJob
         var total = Stopwatch.StartNew();
         var world = new ServerWorld();
         // Warm every path (walking, landing, both step lengths) until the JIT compiles nothing new, so no row
-        // is timed in first-tier code (see QueryJob.WarmUntilJitSettles).
+        // is timed in first-tier code (see RowTimer.WarmUntilJitSettles).
         var warm = Herd.Split(world, 500, 1);
-        var (warmSeconds, _) = Queries.QueryJob.WarmUntilJitSettles(() => { RunTicks(warm, 3, 1.0 / 30); RunTicks(warm, 1, 0.2); });
+        var (warmSeconds, _) = Reporting.RowTimer.WarmUntilJitSettles(() => { RunTicks(warm, 3, 1.0 / 30); RunTicks(warm, 1, 0.2); });
         var report = new StringBuilder();
         report.AppendLine("# Server tick");
         report.AppendLine();
