@@ -187,6 +187,9 @@ public sealed class WorldQuery
     /// <summary>How many sub-steps the last camera arm passed over without walking them (for tests).</summary>
     internal int PassedSubSteps => _viewer.Transition.PassedViewerSteps;
 
+    /// <summary>How many cell searches the last arm's walked sub-steps passed over (for tests).</summary>
+    internal int PassedCellSearches => _viewer.Transition.PassedViewerCellSearches;
+
     /// <summary>Queries read only a position's origin and cell (the camera also its rotation); the cell must be in the world.</summary>
     private void CheckPosition(in Position position, string originField, string cellField)
     {

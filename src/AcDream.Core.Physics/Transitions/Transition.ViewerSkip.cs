@@ -31,6 +31,7 @@ internal sealed partial class Transition
     private int PassClearViewerSteps(in StepPlan plan)
     {
         PassedViewerSteps = 0;
+        PassedViewerCellSearches = 0;
         var path = SpherePath;
         var ci = CollisionInfo;
         int numSteps = plan.NumSteps;
@@ -56,9 +57,13 @@ internal sealed partial class Transition
 
         float radius = path.GlobalSphere[0].Radius;
         var land = cell as LandCell;
-        float clear = land is not null
-            ? ViewerClearance.ClearFractionOutdoors(World.Objects, land, start, end, radius, ObjectInfo)
-            : ViewerClearance.ClearFraction(World.Cells, World.Objects, (EnvCell)cell, start, end, radius, ObjectInfo);
+        float clear, cellAlone = 0f;
+        if (land is not null)
+            clear = ViewerClearance.ClearFractionOutdoors(World.Objects, land, start, end, radius, ObjectInfo);
+        else
+            clear = ViewerClearance.ClearFraction(World.Cells, World.Objects, (EnvCell)cell, start, end, radius, ObjectInfo, out cellAlone);
+        if (cellAlone > 0f)
+            _viewerAlone = new AloneStretch(cell, start, end, MathF.Min(cellAlone, 1f), radius);
         // Sub-step i ends at the fraction i / (numSteps − 1) of the segment: pass those strictly before the first doubt.
         int count = float.IsPositiveInfinity(clear) ? most : Math.Min(most, (int)Math.Ceiling((double)clear * (numSteps - 1)) - 1);
         if (count <= 0)
@@ -102,6 +107,55 @@ internal sealed partial class Transition
         SetCurrentCheckPos();
         PassedViewerSteps = count;
         return count;
+    }
+
+    /// <summary>
+    /// The stretch of the segment the last proof showed keeps the indoor cell alone in the cell search (set by
+    /// <see cref="PassClearViewerSteps"/>, cleared at the start of every transition): the segment, the
+    /// fraction before which it holds, the sphere's radius.
+    /// </summary>
+    private readonly record struct AloneStretch(Cell Cell, Vector3 From, Vector3 To, float Before, float Radius);
+
+    private AloneStretch? _viewerAlone;
+
+    /// <summary>How many cell searches the last viewer transition's walked sub-steps passed over (for tests).</summary>
+    internal int PassedViewerCellSearches { get; private set; }
+
+    /// <summary>
+    /// The walked sub-steps' cell search, passed over where the proof holds (not retail; changes no result).
+    /// When the check sphere (one sphere, the proven radius, in the proven cell) lies within
+    /// <see cref="ViewerClearance.DriftBudget"/> of a point of the proven stretch, retail find_cell_list would
+    /// list only the cell (no portal to the outside within reach, every neighbour outside), mark the path as
+    /// hitting an interior cell, and find the centre in the cell: that is what this does. The proof's margin
+    /// (<see cref="ViewerClearance.Margin"/>, 1 cm) covers the 4 mm and the rounding of the test itself.
+    /// </summary>
+    /// <returns>False when unsure: the caller searches as retail does.</returns>
+    private bool CellAloneAtCheck(bool findContaining, out Cell? holder)
+    {
+        holder = null;
+        var path = SpherePath;
+        if (_viewerAlone is not { } alone || WalkEveryViewerStep || Observer is not null || !IsViewer
+            || path.InsertType != InsertType.Transition || path.NumSphere != 1
+            || path.CheckPos.CellId != alone.Cell.Id || path.GlobalSphere[0].Radius != alone.Radius)
+            return false;
+        var centre = path.GlobalSphere[0].Center;
+        var along = alone.To - alone.From;
+        float length2 = Vector3.Dot(along, along);
+        if (!(length2 > 0f))
+            return false;
+        float t = Vector3.Dot(centre - alone.From, along) / length2;
+        if (!(t >= 0f && t < alone.Before))
+            return false;
+        var off = centre - (alone.From + along * t);
+        if (!(Vector3.Dot(off, off) <= ViewerClearance.DriftBudget * ViewerClearance.DriftBudget))
+            return false;
+        CellArray.Clear();
+        CellArray.Add(alone.Cell);
+        path.HitsInteriorCell = true;
+        PassedViewerCellSearches++;
+        if (findContaining)
+            holder = alone.Cell;
+        return true;
     }
 
     private static float MaxAbs(Vector3 v) => MathF.Max(MathF.Abs(v.X), MathF.Max(MathF.Abs(v.Y), MathF.Abs(v.Z)));

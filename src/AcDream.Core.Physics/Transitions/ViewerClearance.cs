@@ -45,14 +45,17 @@ internal static class ViewerClearance
     /// <summary>
     /// The fraction of the segment <paramref name="a"/>→<paramref name="b"/> (landblock space of
     /// <paramref name="cell"/>) before which a sphere of <paramref name="radius"/> is clear in the sense
-    /// above; <see cref="float.PositiveInfinity"/> when the whole segment is.
+    /// above; <see cref="float.PositiveInfinity"/> when the whole segment is. <paramref name="cellAlone"/> is
+    /// the fraction before which the third condition alone holds (the cell search lists only the cell and
+    /// finds the centre in it), whatever the polygons and objects; infinity when the whole segment.
     /// </summary>
-    public static float ClearFraction(CellGraph cells, ShadowObjectRegistry objects, EnvCell cell, Vector3 a, Vector3 b, float radius, ObjectInfo mover)
+    public static float ClearFraction(CellGraph cells, ShadowObjectRegistry objects, EnvCell cell, Vector3 a, Vector3 b, float radius, ObjectInfo mover, out float cellAlone)
     {
         float reach = radius + Margin;
         var la = cell.ToLocal(a);
         var lb = cell.ToLocal(b);
         float limit = StaysInFront(cell.CellBsp, la, lb);
+        cellAlone = 0f;
         foreach (var portal in cell.Portals)
         {
             if (limit <= 0f)
@@ -70,6 +73,7 @@ internal static class ViewerClearance
                 limit = MathF.Min(limit, FirstNotOutside(other, other.ToLocal(a - shift), other.ToLocal(b - shift), reach + CellBspGrowth));
             }
         }
+        cellAlone = MathF.Max(limit, 0f);
         if (limit > 0f && cell.PhysicsBsp is { } bsp)
             limit = MathF.Min(limit, FirstNearPolygon(bsp, la, lb, reach, limit));
         if (limit > 0f)

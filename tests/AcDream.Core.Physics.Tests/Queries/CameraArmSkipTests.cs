@@ -62,6 +62,10 @@ public class CameraArmSkipTests
         var q = CameraArmCases.QueryFor(CameraArmCases.Scene.Cottage);
         q.CameraArm(new Position(CameraArmCases.Room, new Vector3(100, 101, 1.5f)), new Vector3(100, 106, 1.5f));
         Assert.Equal(8, q.PassedSubSteps);
+        // The two walked sub-steps (the 9th, centre y 103.7, and the 10th, backed off from the wall) are still more than
+        // 1 cm in front of the wall's split (y 104), far from the doorway's portal (y 100) and outside the cellar's
+        // cell: their cell searches are passed over too, one each.
+        Assert.Equal(2, q.PassedCellSearches);
         // Outdoors nothing is passed over in a land cell with a building (the cottage's), nor along a cell's
         // border; over the sloped landblock's cell 0xA9B40001 (ground below 2.2 m there), up to 0.31 m short of its
         // north edge: 25.18 m in 84 sub-steps of 0.2979 m northwards, y <= 24 - 0.31 for the first 62.
@@ -94,7 +98,7 @@ public class CameraArmSkipTests
         // sub-steps and by one that walks every sub-step; the viewer transitions under them are also run
         // through two engines and their whole results compared.
         var random = new Random(2512);
-        int passed = 0, indoor = 0;
+        int passed = 0, indoor = 0, searches = 0;
         foreach (var scene in Enum.GetValues<CameraArmCases.Scene>())
         {
             var world = CameraArmCases.WorldOf(scene);
@@ -113,8 +117,10 @@ public class CameraArmSkipTests
 
                 var a = skipping.CameraArm(from, desired, player);
                 int steps = skipping.PassedSubSteps;
+                searches += skipping.PassedCellSearches;
                 var b = walking.CameraArm(from, desired, player);
                 Assert.Equal(0, walking.PassedSubSteps);
+                Assert.Equal(0, walking.PassedCellSearches);
                 Assert.True(Same(a, b), $"{what}: passing over {steps} sub-steps gave {Show(a)}, walking gave {Show(b)}");
                 passed += steps > 0 ? 1 : 0;
 
@@ -131,6 +137,8 @@ public class CameraArmSkipTests
         // The skip must have happened for the comparison to mean anything: in a 4 m room many arms are short or
         // meet a wall within a sub-step or two, but a good share of those starting indoors pass over some.
         Assert.True(passed > indoor / 4, $"only {passed} of 12,000 arms ({indoor} starting indoors) passed over sub-steps");
+        // And the walked sub-steps' cell searches passed over where the proof keeps the room alone.
+        Assert.True(searches > passed / 2, $"only {searches} cell searches passed over in {passed} arms that passed over sub-steps");
     }
 
     private static (uint Cell, Vector3 Pivot) RandomPivot(Random random, CameraArmCases.Scene scene)
