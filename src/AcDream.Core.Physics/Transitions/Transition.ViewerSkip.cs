@@ -63,7 +63,11 @@ internal sealed partial class Transition
         else
             clear = ViewerClearance.ClearFraction(World.Cells, World.Objects, (EnvCell)cell, start, end, radius, ObjectInfo, out cellAlone);
         if (cellAlone > 0f)
-            _viewerAlone = new AloneStretch(cell, start, end, MathF.Min(cellAlone, 1f), radius);
+        {
+            var along = end - start;
+            (_aloneCell, _aloneFrom, _aloneAlong, _aloneLength2, _aloneBefore, _aloneRadius)
+                = (cell, start, along, Vector3.Dot(along, along), MathF.Min(cellAlone, 1f), radius);
+        }
         // Sub-step i ends at the fraction i / (numSteps − 1) of the segment: pass those strictly before the first doubt.
         int count = float.IsPositiveInfinity(clear) ? most : Math.Min(most, (int)Math.Ceiling((double)clear * (numSteps - 1)) - 1);
         if (count <= 0)
@@ -109,14 +113,12 @@ internal sealed partial class Transition
         return count;
     }
 
-    /// <summary>
-    /// The stretch of the segment the last proof showed keeps the indoor cell alone in the cell search (set by
-    /// <see cref="PassClearViewerSteps"/>, cleared at the start of every transition): the segment, the
-    /// fraction before which it holds, the sphere's radius.
-    /// </summary>
-    private readonly record struct AloneStretch(Cell Cell, Vector3 From, Vector3 To, float Before, float Radius);
-
-    private AloneStretch? _viewerAlone;
+    // The stretch of the segment the last proof showed keeps the indoor cell alone in the cell search (set by
+    // PassClearViewerSteps, cleared at the start of every transition: _aloneCell null): the cell, the segment's
+    // start, its vector and squared length, the fraction before which it holds, the sphere's radius.
+    private Cell? _aloneCell;
+    private Vector3 _aloneFrom, _aloneAlong;
+    private float _aloneLength2, _aloneBefore, _aloneRadius;
 
     /// <summary>How many cell searches the last viewer transition's walked sub-steps passed over (for tests).</summary>
     internal int PassedViewerCellSearches { get; private set; }
@@ -134,27 +136,26 @@ internal sealed partial class Transition
     {
         holder = null;
         var path = SpherePath;
-        if (_viewerAlone is not { } alone || WalkEveryViewerStep || Observer is not null || !IsViewer
-            || path.InsertType != InsertType.Transition || path.NumSphere != 1
-            || path.CheckPos.CellId != alone.Cell.Id || path.GlobalSphere[0].Radius != alone.Radius)
+        var cell = _aloneCell;
+        if (cell is null || WalkEveryViewerStep || Observer is not null || !IsViewer
+            || path.InsertType != InsertType.Transition || path.NumSphere != 1 || !(_aloneLength2 > 0f)
+            || path.CheckPos.CellId != cell.Id)
             return false;
-        var centre = path.GlobalSphere[0].Center;
-        var along = alone.To - alone.From;
-        float length2 = Vector3.Dot(along, along);
-        if (!(length2 > 0f))
+        ref readonly var sphere = ref path.GlobalSphere[0];
+        if (sphere.Radius != _aloneRadius)
             return false;
-        float t = Vector3.Dot(centre - alone.From, along) / length2;
-        if (!(t >= 0f && t < alone.Before))
+        float t = Vector3.Dot(sphere.Center - _aloneFrom, _aloneAlong) / _aloneLength2;
+        if (!(t >= 0f && t < _aloneBefore))
             return false;
-        var off = centre - (alone.From + along * t);
+        var off = sphere.Center - (_aloneFrom + _aloneAlong * t);
         if (!(Vector3.Dot(off, off) <= ViewerClearance.DriftBudget * ViewerClearance.DriftBudget))
             return false;
         CellArray.Clear();
-        CellArray.Add(alone.Cell);
+        CellArray.Add(cell);
         path.HitsInteriorCell = true;
         PassedViewerCellSearches++;
         if (findContaining)
-            holder = alone.Cell;
+            holder = cell;
         return true;
     }
 

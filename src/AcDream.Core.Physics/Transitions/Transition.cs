@@ -123,7 +123,7 @@ internal sealed partial class Transition
     internal bool FindTransitionalPosition(in StepPlan plan)
     {
         var path = SpherePath;
-        _viewerAlone = null;
+        _aloneCell = null;
         if (path.BeginCell is null)
             return false;
         var state = TransitionState.OK;
@@ -432,7 +432,7 @@ internal sealed partial class Transition
         var path = SpherePath;
         path.CellArrayValid = true;
         path.HitsInteriorCell = false;
-        if (_viewerAlone is not null && CellAloneAtCheck(findContaining, out var holder))
+        if (_aloneCell is not null && CellAloneAtCheck(findContaining, out var holder))
             return holder;
         return World.Cells.FindCellList(path.CheckPos, path.GlobalSphere[..path.NumSphere], CellArray, findContaining, path);
     }
