@@ -20,8 +20,9 @@
 # times, then about TRANSITIONS transitions (default 2000) between two marks, and the instructions between
 # the marks are divided by the transitions (start-up and JIT are left out). The JIT is asked for its optimized code at once
 # (DOTNET_TieredCompilation=0) so the count is repeatable; it is a proxy for the tiered, profile-guided
-# code that the wall-clock runs measure. A rough one: under valgrind the JIT inlined nothing (its listing
-# of a method run there calls Vector3's operators and span indexers), so the counts overstate call
+# code that the wall-clock runs measure. A rough one: under valgrind the JIT compiles about half the
+# methods, hot ones included, a second time with MinOpts (no inlining: they call Vector3's operators and
+# span indexers; see docs/performance.md, "The face slide, this round"), so the counts overstate call
 # overhead and understate what inlining saves; the wall-clock ratios decide. Default workloads: head-on
 # and slide-ne.
 set -euo pipefail
