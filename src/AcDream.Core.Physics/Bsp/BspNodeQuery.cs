@@ -61,51 +61,6 @@ internal static class BspNodeQuery
     }
 
     /// <summary>
-    /// The answer of <see cref="SphereIntersectsPoly"/> alone, for a caller that reads neither the hit polygon
-    /// nor the contact point (not retail; retail's back-off bisection in adjust_to_plane, see
-    /// <see cref="BspQuery.AdjustToPlane"/>): the same routing, the same leaves, the same polygons in the same
-    /// order, but a polygon the sphere moves along or away from (<c>movement·N ≥ 0</c>, the very test
-    /// <see cref="PolygonQuery.PosHitsSphere"/> makes after its precise test) is passed without the precise
-    /// test, which could only have recorded a polygon and a point nobody reads.
-    /// </summary>
-    public static bool SphereHitsPolyFront(BspTree tree, int index, in Sphere checkPos, Vector3 movement)
-    {
-        while (index >= 0)
-        {
-            ref readonly var node = ref tree.NodeArray[index];
-            if (node.IsLeaf)
-            {
-                if (node.PolygonCount == 0 || !node.Bounds.Intersects(checkPos))
-                    return false;
-                var polygons = tree.PolygonArray;
-                var indices = tree.IndexArray;
-                for (int k = 0; k < node.PolygonCount; k++)
-                {
-                    var polygon = polygons[indices[node.FirstPolygon + k]];
-                    if (VectorMath.Dot(movement, polygon.Plane.Normal) < 0f && PolygonQuery.HitsSphere(polygon, checkPos))
-                        return true;
-                }
-                return false;
-            }
-            if (!node.Bounds.Intersects(checkPos))
-                return false;
-            float distance = SplitDistance(node, checkPos.Center);
-            float reach = checkPos.Radius - Epsilon;
-            if (distance >= reach)
-                index = node.Front;
-            else if (distance <= -reach)
-                index = node.Back;
-            else
-            {
-                if (SphereHitsPolyFront(tree, node.Front, checkPos, movement))
-                    return true;
-                index = node.Back;
-            }
-        }
-        return false;
-    }
-
-    /// <summary>
     /// Retail BSPNODE/BSPLEAF::sphere_intersects_solid: true when the sphere touches a polygon, or — with
     /// <paramref name="centerCheck"/> — when its centre lies in a solid leaf. A straddled split passes the
     /// centre check only to the side that holds the centre (front when exactly on the plane). Retail quirk:

@@ -313,9 +313,6 @@ internal static class BspQuery
     /// uses them up.
     /// Retail quirk (acclient.c:360915): the first stage stops as soon as the touch time is exactly 1
     /// (already within a radius of the plane), leaving the bracket at [0, 1]; ACE inverts that test.
-    /// The bisection asks each walk only whether it hits (<see cref="BspNodeQuery.SphereHitsPolyFront"/>, the
-    /// same answer for less work), so <paramref name="contactPoint"/> is left as the first stage set it; retail's
-    /// caller (collide_with_pt) reads neither it nor the re-aimed polygon afterwards.
     /// </summary>
     public static bool AdjustToPlane(BspTree tree, ref Sphere checkPos, Vector3 currPos, Polygon hitPolygon, ref Vector3 contactPoint)
     {
@@ -346,8 +343,7 @@ internal static class BspQuery
         {
             float middle = (lower + upper) * 0.5f;
             checkPos.Center = currPos + movement * middle;
-            // Only the answer is read from here on (not the polygon hit, nor the contact point): the answer-only walk.
-            if (BspNodeQuery.SphereHitsPolyFront(tree, 0, checkPos, movement))
+            if (BspNodeQuery.SphereIntersectsPoly(tree, 0, checkPos, movement, ref aim, ref contactPoint))
                 upper = middle;
             else
                 lower = middle;

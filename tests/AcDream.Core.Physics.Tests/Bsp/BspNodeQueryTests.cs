@@ -68,53 +68,6 @@ public class BspNodeQueryTests
         Assert.Null(hit);
     }
 
-    [Theory]
-    [InlineData(-0.5f, 0f, 0f, true)]  // into the +X face's front: a hit
-    [InlineData(0.5f, 0f, 0f, false)]  // out of it: grazed from behind, no hit
-    [InlineData(0f, 0.5f, 0f, false)]  // along it (movement·N exactly 0): retail's gate rejects it too
-    [InlineData(0f, 0f, -0.5f, false)] // along it, downwards
-    public void SphereHitsPolyFront_AnswersAsTheFullWalk(float mx, float my, float mz, bool expected)
-    {
-        // Sphere 0.3 from the +X face, 0.2 into its reach; the adjust_to_plane bisection asks only this answer.
-        var tree = BoxFixtures.SolidBox(out _);
-        var sphere = new Sphere(new Vector3(1.3f, 0, 0), 0.5f);
-        var movement = new Vector3(mx, my, mz);
-        Assert.Equal(expected, BspNodeQuery.SphereHitsPolyFront(tree, 0, sphere, movement));
-        Polygon? hit = null;
-        var contact = Vector3.Zero;
-        Assert.Equal(expected, BspNodeQuery.SphereIntersectsPoly(tree, 0, sphere, movement, ref hit, ref contact));
-    }
-
-    [Fact]
-    public void SphereHitsPolyFront_SameAnswerAsTheFullWalk_RandomSpheresAndMoves()
-    {
-        // Centres around the box (edges, corners, exact touching distances), moves along axes (zero components:
-        // the gate's boundary) and at random: the answer-only walk must agree with retail's walk every time.
-        var tree = BoxFixtures.SolidBox(out _);
-        var random = new Random(25);
-        float[] grid = [-1.5f, -1.3f, -1f, -0.5f, 0f, 0.5f, 1f, 1.3f, 1.5f - Eps, 1.5f];
-        int hits = 0, misses = 0;
-        for (int i = 0; i < 20000; i++)
-        {
-            Vector3 centre = i % 2 == 0
-                ? new Vector3(grid[random.Next(grid.Length)], grid[random.Next(grid.Length)], grid[random.Next(grid.Length)])
-                : new Vector3(random.NextSingle() * 4 - 2, random.NextSingle() * 4 - 2, random.NextSingle() * 4 - 2);
-            Vector3 movement = i % 3 == 0
-                ? new Vector3(random.Next(3) - 1, random.Next(3) - 1, random.Next(3) - 1) * 0.3f
-                : new Vector3(random.NextSingle() - 0.5f, random.NextSingle() - 0.5f, random.NextSingle() - 0.5f);
-            var sphere = new Sphere(centre, 0.5f);
-            Polygon? hit = null;
-            var contact = Vector3.Zero;
-            bool full = BspNodeQuery.SphereIntersectsPoly(tree, 0, sphere, movement, ref hit, ref contact);
-            Assert.True(full == BspNodeQuery.SphereHitsPolyFront(tree, 0, sphere, movement), $"centre {centre}, movement {movement}: the full walk says {full}");
-            if (full)
-                hits++;
-            else
-                misses++;
-        }
-        Assert.True(hits > 1000 && misses > 1000, $"{hits} hits, {misses} misses: the sample must hold both");
-    }
-
     [Fact]
     public void SphereIntersectsSolidPoly_ReportsPolygonOrCentreSolid()
     {
