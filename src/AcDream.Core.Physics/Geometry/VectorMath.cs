@@ -58,6 +58,17 @@ internal static class VectorMath
     /// <summary>Signed distance of a point from a plane (normal assumed unit).</summary>
     public static float Distance(in Plane plane, Vector3 point) => Dot(plane.Normal, point) + plane.D;
 
+    /// <summary>The largest magnitude of a vector's components (a bound for its rounding).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static float MaxAbs(Vector3 v) => MathF.Max(MathF.Max(MathF.Abs(v.X), MathF.Abs(v.Y)), MathF.Abs(v.Z));
+
+    /// <summary>Whether the boxes from <paramref name="minA"/> to <paramref name="maxA"/> and from <paramref name="minB"/> to <paramref name="maxB"/> meet (touching counts).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static bool BoxesMeet(Vector3 minA, Vector3 maxA, Vector3 minB, Vector3 maxB) =>
+        minA.X <= maxB.X && maxA.X >= minB.X
+        && minA.Y <= maxB.Y && maxA.Y >= minB.Y
+        && minA.Z <= maxB.Z && maxA.Z >= minB.Z;
+
     /// <summary>
     /// Retail snap_to_plane: moves a vector within the plane by changing only its Z, so that its
     /// horizontal part is kept (used to make motion follow a slope). Retail computes the Z as

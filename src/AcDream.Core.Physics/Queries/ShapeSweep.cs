@@ -140,9 +140,7 @@ internal static class ShapeSweep
     /// widened as in <see cref="SegmentMeetsBox"/>, do not meet (the swept box is passed widened).
     /// </summary>
     private static bool BoxesMeet(Polygon polygon, Vector3 sweptMin, Vector3 sweptMax) =>
-        polygon.BoxMin.X <= sweptMax.X && polygon.BoxMax.X >= sweptMin.X
-        && polygon.BoxMin.Y <= sweptMax.Y && polygon.BoxMax.Y >= sweptMin.Y
-        && polygon.BoxMin.Z <= sweptMax.Z && polygon.BoxMax.Z >= sweptMin.Z;
+        VectorMath.BoxesMeet(polygon.BoxMin, polygon.BoxMax, sweptMin, sweptMax);
 
     /// <summary>
     /// The next test before the exact one, after <see cref="BoxesMeet"/>: false when the segment from <paramref name="a"/> to

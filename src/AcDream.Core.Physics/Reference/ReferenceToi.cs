@@ -321,17 +321,15 @@ public static class ReferenceToi
     internal static void EdgeReach(Vector3 c, Vector3 d, float r, float limit, Polygon polygon, out Vector3 min, out Vector3 max)
     {
         var end = c + limit * d;
-        float largest = MathF.Max(MaxAbs(polygon.BoxMin), MaxAbs(polygon.BoxMax));
-        var grow = new Vector3(r + 0.01f + 1e-5f * (largest + MaxAbs(c) + MaxAbs(d) + r));
+        float largest = MathF.Max(VectorMath.MaxAbs(polygon.BoxMin), VectorMath.MaxAbs(polygon.BoxMax));
+        var grow = new Vector3(r + 0.01f + 1e-5f * (largest + VectorMath.MaxAbs(c) + VectorMath.MaxAbs(d) + r));
         min = Vector3.Min(c, end) - grow;
         max = Vector3.Max(c, end) + grow;
     }
 
     /// <summary>Whether the box of the edge from <paramref name="a"/> to <paramref name="b"/> meets the box from <paramref name="min"/> to <paramref name="max"/>.</summary>
     internal static bool EdgeMeetsBox(Vector3 a, Vector3 b, Vector3 min, Vector3 max) =>
-        MathF.Max(a.X, b.X) >= min.X && MathF.Min(a.X, b.X) <= max.X
-        && MathF.Max(a.Y, b.Y) >= min.Y && MathF.Min(a.Y, b.Y) <= max.Y
-        && MathF.Max(a.Z, b.Z) >= min.Z && MathF.Min(a.Z, b.Z) <= max.Z;
+        VectorMath.BoxesMeet(Vector3.Min(a, b), Vector3.Max(a, b), min, max);
 
     /// <summary>
     /// How much nearer than its plane a point can be to a polygon, with rounding: a vertex may lie off the plane
@@ -341,11 +339,10 @@ public static class ReferenceToi
     /// </summary>
     private static float RestingMargin(Vector3 c, Polygon polygon)
     {
-        float largest = MathF.Max(MaxAbs(polygon.BoxMin), MaxAbs(polygon.BoxMax));
-        return 0.01f + 1e-5f * (largest + MaxAbs(c));
+        float largest = MathF.Max(VectorMath.MaxAbs(polygon.BoxMin), VectorMath.MaxAbs(polygon.BoxMax));
+        return 0.01f + 1e-5f * (largest + VectorMath.MaxAbs(c));
     }
 
-    private static float MaxAbs(Vector3 v) => MathF.Max(MathF.Max(MathF.Abs(v.X), MathF.Abs(v.Y)), MathF.Abs(v.Z));
 
     /// <summary>
     /// Time of impact with a solid world-Z cylinder (retail CylSphere: low point, radius, height): the
@@ -516,7 +513,7 @@ public static class ReferenceToi
     /// origin a float step is 15 µm, so a fixed 1 µm let a ray through the seam of two terrain triangles).
     /// </summary>
     private static float InsideTolerance(Vector3 p) =>
-        1e-6f + 4.8e-7f * MathF.Max(MathF.Max(MathF.Abs(p.X), MathF.Abs(p.Y)), MathF.Abs(p.Z));
+        1e-6f + 4.8e-7f * VectorMath.MaxAbs(p);
 
     /// <summary>The point of a convex polygon closest to <paramref name="p"/>.</summary>
     public static Vector3 ClosestPointOnPolygon(Vector3 p, Polygon polygon)

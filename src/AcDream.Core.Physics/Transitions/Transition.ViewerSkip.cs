@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;
@@ -47,7 +48,7 @@ internal sealed partial class Transition
         var perStep = plan.PerStep;
         var start = path.GlobalSphere[0].Center;
         var end = start + perStep * most;
-        float size = MathF.Max(MaxAbs(start), MaxAbs(end));
+        float size = MathF.Max(VectorMath.MaxAbs(start), VectorMath.MaxAbs(end));
         if (!(size <= ViewerClearance.MaxCoordinate))
             return 0;
         // Each walked sub-step adds in float: at most half an ulp of the sum per axis, ~1.2e-7 × size, plus the
@@ -159,5 +160,4 @@ internal sealed partial class Transition
         return true;
     }
 
-    private static float MaxAbs(Vector3 v) => MathF.Max(MathF.Abs(v.X), MathF.Max(MathF.Abs(v.Y), MathF.Abs(v.Z)));
 }

@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
+using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 
@@ -65,7 +66,7 @@ internal static class ViewerClearance
                 // find_cell_list adds the outside cells when a sphere is within radius + EPSILON of the plane.
                 var plane = portal.Polygon.Plane;
                 float band = reach + PhysicsConstants.Epsilon;
-                limit = MathF.Min(limit, FirstWithin(Distance(plane, la), Distance(plane, lb), -band, band));
+                limit = MathF.Min(limit, FirstWithin(VectorMath.Distance(plane, la), VectorMath.Distance(plane, lb), -band, band));
             }
             else if (cells.Get(portal.OtherCellId) is EnvCell other)
             {
@@ -99,8 +100,8 @@ internal static class ViewerClearance
         float limit = MathF.Min(FirstOutside(a.X, b.X, corner.X + reach, corner.X + size - reach),
             FirstOutside(a.Y, b.Y, corner.Y + reach, corner.Y + size - reach));
         var (first, second) = cell.Triangles;
-        limit = MathF.Min(limit, FirstWithin(Distance(first.Plane, a), Distance(first.Plane, b), float.NegativeInfinity, reach));
-        limit = MathF.Min(limit, FirstWithin(Distance(second.Plane, a), Distance(second.Plane, b), float.NegativeInfinity, reach));
+        limit = MathF.Min(limit, FirstWithin(VectorMath.Distance(first.Plane, a), VectorMath.Distance(first.Plane, b), float.NegativeInfinity, reach));
+        limit = MathF.Min(limit, FirstWithin(VectorMath.Distance(second.Plane, a), VectorMath.Distance(second.Plane, b), float.NegativeInfinity, reach));
         if (limit > 0f)
             limit = MathF.Min(limit, FirstNearObject(objects.ObjectsInCell(cell.Id), cell.Id, mover, a, b, reach));
         return MathF.Max(limit, 0f);
@@ -115,9 +116,6 @@ internal static class ViewerClearance
             return 0f;
         return exit >= 1f ? float.PositiveInfinity : exit;
     }
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static float Distance(in Plane plane, Vector3 p) => Vector3.Dot(plane.Normal, p) + plane.D;
 
     /// <summary>
     /// Retail point_in_cell asks every split of the containment chain to have the point no more than EPSILON
@@ -137,7 +135,7 @@ internal static class ViewerClearance
                     return 0f;
                 continue;
             }
-            first = MathF.Min(first, FirstWithin(Distance(plane, la), Distance(plane, lb), float.NegativeInfinity, Margin));
+            first = MathF.Min(first, FirstWithin(VectorMath.Distance(plane, la), VectorMath.Distance(plane, lb), float.NegativeInfinity, Margin));
         }
         return first;
     }
@@ -159,7 +157,7 @@ internal static class ViewerClearance
             {
                 var plane = nodes[index].SplitPlane;
                 float enter = 0f, exit = 1f;
-                Within(Distance(plane, la), Distance(plane, lb), float.NegativeInfinity, -reach, ref enter, ref exit);
+                Within(VectorMath.Distance(plane, la), VectorMath.Distance(plane, lb), float.NegativeInfinity, -reach, ref enter, ref exit);
                 if (enter <= covered && exit > covered)
                 {
                     covered = exit;
@@ -198,7 +196,7 @@ internal static class ViewerClearance
                 var polygon = polygons[indices[node.FirstPolygon + k]];
                 float enter = 0f, exit = 1f;
                 // The plane band first: it alone passes most of a room's polygons (floor, ceiling, the walls beside the arm).
-                Within(Distance(polygon.Plane, la), Distance(polygon.Plane, lb), -reach, reach, ref enter, ref exit);
+                Within(VectorMath.Distance(polygon.Plane, la), VectorMath.Distance(polygon.Plane, lb), -reach, reach, ref enter, ref exit);
                 if (!(enter <= exit && enter < limit))
                     continue;
                 Within(la.X, lb.X, polygon.BoxMin.X - reach, polygon.BoxMax.X + reach, ref enter, ref exit);

@@ -179,7 +179,7 @@ internal static class Guard
     {
         float largest = 0f;
         foreach (var p in v)
-            largest = MathF.Max(largest, MathF.Max(MathF.Abs(p.X), MathF.Max(MathF.Abs(p.Y), MathF.Abs(p.Z))));
+            largest = MathF.Max(largest, VectorMath.MaxAbs(p));
         float tolerance = InputLimits.PolygonTolerance + InputLimits.PolygonRelativeTolerance * largest;
         int worst = 0;
         float worstOff = 0f;
