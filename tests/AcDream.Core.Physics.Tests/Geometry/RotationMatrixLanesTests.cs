@@ -1,11 +1,13 @@
+using System.Runtime.Intrinsics;
 using AcDream.Core.Physics;
 
 namespace AcDream.Core.Physics.Tests.Geometry;
 
 /// <summary>
-/// The widened matrix the sphere path transforms through (not retail; changes no result) gives the very
-/// bits of retail's scalar evaluation in <see cref="RotationMatrix"/>, whose values the frame-math tests and
-/// the ACE parity files pin. Checked on rotations about every axis and skewed ones, with points whose
+/// The widened matrix the sphere path transforms through (not retail; changes no result) gives, in every
+/// lane, the very bits of retail's scalar evaluation in <see cref="RotationMatrix"/>, whose values the
+/// frame-math tests and the ACE parity files pin: both the side-by-side form (AVX) and the one-lane-at-a-time
+/// fallback that runs without it. Checked on rotations about every axis and skewed ones, with points whose
 /// products and sums round (thirds, large and small coordinates, negative zero) and a z difference that
 /// float cannot hold exactly (the unrounded z row of Frame::globaltolocal).
 /// </summary>
@@ -28,22 +30,40 @@ public class RotationMatrixLanesTests
 
     private static uint[] Bits(Vector3 v) => [BitConverter.SingleToUInt32Bits(v.X), BitConverter.SingleToUInt32Bits(v.Y), BitConverter.SingleToUInt32Bits(v.Z)];
 
+    // Every point in every lane: four consecutive points of the list (wrapping), each lane a different one.
+    private static IEnumerable<PointLanes> Quadruples()
+    {
+        for (int i = 0; i < Points.Length; i++)
+            yield return PointLanes.Of(Points[i], Points[(i + 1) % Points.Length], Points[(i + 3) % Points.Length], Points[(i + 5) % Points.Length]);
+    }
+
     [Fact]
-    public void PositionToGlobal_AndFrameToLocal_AreTheScalarFormsBitForBit()
+    public void PositionToGlobal_AndFrameToLocal_GiveTheScalarFormInEveryLane_OnBothPaths()
     {
         int checks = 0;
         foreach (var q in Rotations())
         {
             var scalar = new Frame(Vector3.Zero, q).Matrix;
             var lanes = new RotationMatrixLanes(scalar);
-            foreach (var p in Points)
+            foreach (var points in Quadruples())
                 foreach (var origin in Points)
                 {
-                    Assert.Equal(Bits(scalar.PositionToGlobal(p, origin)), Bits(lanes.PositionToGlobal(p, origin)));
-                    Assert.Equal(Bits(scalar.FrameToLocal(p, origin)), Bits(lanes.FrameToLocal(p, origin)));
-                    checks++;
+                    var toGlobal = lanes.PositionToGlobal(points, origin);
+                    var toGlobalByLane = lanes.PositionToGlobalByLane(points, origin);
+                    var toLocal = lanes.FrameToLocal(points, origin);
+                    var toLocalByLane = lanes.FrameToLocalByLane(points, origin);
+                    for (int lane = 0; lane < 4; lane++)
+                    {
+                        var global = Bits(scalar.PositionToGlobal(points[lane], origin));
+                        var local = Bits(scalar.FrameToLocal(points[lane], origin));
+                        Assert.Equal(global, Bits(toGlobal[lane]));
+                        Assert.Equal(global, Bits(toGlobalByLane[lane]));
+                        Assert.Equal(local, Bits(toLocal[lane]));
+                        Assert.Equal(local, Bits(toLocalByLane[lane]));
+                        checks++;
+                    }
                 }
         }
-        Assert.True(checks > 1000, $"{checks} checks");
+        Assert.True(checks > 4000, $"{checks} checks");
     }
 }
