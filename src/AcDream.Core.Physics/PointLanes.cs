@@ -32,6 +32,22 @@ internal struct PointLanes
         Vector128.Create(p0.Y, p1.Y, p2.Y, p3.Y),
         Vector128.Create(p0.Z, p1.Z, p2.Z, p3.Z));
 
+    /// <summary><paramref name="first"/> in lanes 0 and 1, <paramref name="second"/> in lanes 2 and 3.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static PointLanes Pairs(Vector3 first, Vector3 second)
+    {
+        if (Sse.IsSupported)
+        {
+            // shufps: lanes 0, 1 from the first operand's element k, lanes 2, 3 from the second one's.
+            Vector128<float> a = first.AsVector128Unsafe(), b = second.AsVector128Unsafe();
+            return new(Sse.Shuffle(a, b, 0b00_00_00_00), Sse.Shuffle(a, b, 0b01_01_01_01), Sse.Shuffle(a, b, 0b10_10_10_10));
+        }
+        return PairsByLane(first, second);
+    }
+
+    /// <summary><see cref="Pairs"/> one element at a time (where SSE is missing; tests call it directly).</summary>
+    internal static PointLanes PairsByLane(Vector3 first, Vector3 second) => Of(first, first, second, second);
+
     /// <summary>Point <paramref name="lane"/>.</summary>
     public readonly Vector3 this[int lane] => new(X.GetElement(lane), Y.GetElement(lane), Z.GetElement(lane));
 

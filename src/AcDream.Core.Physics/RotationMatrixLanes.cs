@@ -67,10 +67,15 @@ internal readonly struct RotationMatrixLanes
         if (!Avx.IsSupported)
             return FrameToLocalByLane(p, origin);
         // The x and y differences are floats; the z row uses the unrounded z difference, the others its float.
+        // That float is taken by a float subtraction rather than by rounding the double difference: the same
+        // number, since a double has more than 2·24 + 1 bits, so rounding a difference of floats first to
+        // double and then to float gives the correctly rounded float difference (double rounding is
+        // innocuous, Figueroa 1995), which is what float subtraction returns. It starts the x and y rows'
+        // chain two conversions sooner.
         var dx = Avx.ConvertToVector256Double(p.X - Vector128.Create(origin.X));
         var dy = Avx.ConvertToVector256Double(p.Y - Vector128.Create(origin.Y));
+        var dz = Avx.ConvertToVector256Double(p.Z - Vector128.Create(origin.Z));
         var dzExact = Avx.ConvertToVector256Double(p.Z) - Vector256.Create((double)origin.Z);
-        var dz = Avx.ConvertToVector256Double(Avx.ConvertToVector128Single(dzExact));
         // Frame::globaltolocal's order per component: z, x, y.
         var lx = _m2 * dz + _m0 * dx;
         var ly = _m5 * dz + _m3 * dx;

@@ -308,7 +308,7 @@ internal sealed class SpherePath
         // landblock (a float sum, as retail), then all three go through the space's transpose at once.
         var fromCheck = LandDefs.BlockOffset(space.CellId, CheckPos.CellId);
         var fromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
-        var offsets = PointLanes.Of(fromCheck, fromCheck, fromCur, fromCur);
+        var offsets = PointLanes.Pairs(fromCheck, fromCur);
         var points = check.WithLane2From(cur);
         var inSpace = spaceMatrix.FrameToLocal(
             new PointLanes(offsets.X + points.X, offsets.Y + points.Y, offsets.Z + points.Z), space.Frame.Origin);

@@ -41,4 +41,19 @@ public class PointLanesTests
             Assert.Equal(new Vector3(-1, -2, -3), mixed[2]);
         }
     }
+
+    [Fact]
+    public void Pairs_PutTheFirstInLanes0And1_AndTheSecondIn2And3_OnBothPaths()
+    {
+        var first = new Vector3(1.5f, -2.25f, 3f);
+        var second = new Vector3(-192f, 0f, -0f);
+        foreach (var pairs in new[] { PointLanes.Pairs(first, second), PointLanes.PairsByLane(first, second) })
+        {
+            Assert.Equal(first, pairs[0]);
+            Assert.Equal(first, pairs[1]);
+            Assert.Equal(second, pairs[2]);
+            Assert.Equal(second, pairs[3]);
+            Assert.True(float.IsNegative(pairs.Z.GetElement(2)), "the sign of a zero is kept");
+        }
+    }
 }

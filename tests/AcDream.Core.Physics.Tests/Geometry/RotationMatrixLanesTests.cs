@@ -66,4 +66,42 @@ public class RotationMatrixLanesTests
         }
         Assert.True(checks > 4000, $"{checks} checks");
     }
+
+    /// <summary>
+    /// The lanes take the float z difference of Frame::globaltolocal by a float subtraction instead of
+    /// rounding the double difference: the same number, because double rounding of a sum of two floats
+    /// through double is innocuous (53 ≥ 2·24 + 1 bits). Checked on differences with every exponent gap,
+    /// random significands, exact halves of the float spacing and their neighbours, signed zeros and
+    /// subnormals.
+    /// </summary>
+    [Fact]
+    public void TheFloatDifference_IsTheDoubleDifferenceRoundedToFloat()
+    {
+        var random = new Random(25);
+        var values = new List<float> { 0f, -0f, 1f, -1f, float.Epsilon, -float.Epsilon, 1e-40f, float.MaxValue / 2, 191.99998f, 1234.5677f };
+        for (int i = 0; i < 4000; i++)
+        {
+            float big = BitConverter.Int32BitsToSingle(random.Next(0x0080_0000, 0x4F00_0000)) * (random.Next(2) == 0 ? 1 : -1);
+            int gap = random.Next(0, 64);
+            float small = MathF.ScaleB(1f + random.NextSingle(), (int)MathF.ILogB(big) - gap) * (random.Next(2) == 0 ? 1 : -1);
+            values.Add(big);
+            values.Add(small);
+            // Half the spacing of floats at `big`, and its neighbours: the tie cases of the rounding.
+            float half = MathF.ScaleB(1f, (int)MathF.ILogB(big) - 24);
+            values.Add(half);
+            values.Add(MathF.BitIncrement(half));
+            values.Add(MathF.BitDecrement(half));
+        }
+        int checks = 0;
+        for (int i = 0; i < values.Count; i++)
+            for (int j = Math.Max(0, i - 6); j < Math.Min(values.Count, i + 6); j++)
+            {
+                float a = values[i], b = values[j];
+                float direct = a - b;
+                float throughDouble = (float)((double)a - b);
+                Assert.Equal(BitConverter.SingleToUInt32Bits(throughDouble), BitConverter.SingleToUInt32Bits(direct));
+                checks++;
+            }
+        Assert.True(checks > 100000, $"{checks} checks");
+    }
 }
