@@ -297,7 +297,6 @@ internal sealed class SpherePath
     /// </summary>
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
-        var invScale = Vector128.Create(1.0f / scale);
         ref readonly var spaceMatrix = ref _spaceMatrix.LanesOf(space.Frame);
         // Position::localtolocal is the other position's localtoglobal, then this one's globaltolocal. The
         // first half is the same for every object tested from one path position: it is the points
@@ -306,20 +305,38 @@ internal sealed class SpherePath
         ref readonly var check = ref PointsAt(CheckPos, ref _checkFresh);
         // Lanes 0 and 1: the check spheres; lane 2: the current sphere 0. Each crosses into the space's
         // landblock (a float sum, as retail), then all three go through the space's transpose at once.
-        var fromCheck = LandDefs.BlockOffset(space.CellId, CheckPos.CellId);
-        var fromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
-        var offsets = PointLanes.Pairs(fromCheck, fromCur);
         var points = check.WithLane2From(cur);
-        var inSpace = spaceMatrix.FrameToLocal(
-            new PointLanes(offsets.X + points.X, offsets.Y + points.Y, offsets.Z + points.Z), space.Frame.Origin);
+        uint block = space.CellId >> 16;
+        if (block != CheckPos.CellId >> 16 || block != CurPos.CellId >> 16 || HasPositiveZero(space.Frame.Origin))
+        {
+            var offsets = PointLanes.Pairs(LandDefs.BlockOffset(space.CellId, CheckPos.CellId), LandDefs.BlockOffset(space.CellId, CurPos.CellId));
+            points = new PointLanes(offsets.X + points.X, offsets.Y + points.Y, offsets.Z + points.Z);
+        }
+        // Else every offset is zero, and adding it is left out: x + 0 is x except that −0 becomes +0, and the
+        // difference with the space's origin that follows is the same for either zero unless that origin
+        // coordinate is +0 (+0 − +0 = +0, −0 − +0 = −0; against −0 or any other value both give the same).
+        var inSpace = spaceMatrix.FrameToLocal(points, space.Frame.Origin);
         inSpace.Rows(_radii, out var sphere0, out var sphere1, out var current0);
-        Store(ref LocalSpaceSphere[0], sphere0 * invScale);
+        if (scale != 1f)
+        {
+            // Dividing by a scale of 1 would multiply by 1, which changes no value.
+            var invScale = Vector128.Create(1.0f / scale);
+            sphere0 *= invScale;
+            sphere1 *= invScale;
+            current0 *= invScale;
+        }
+        Store(ref LocalSpaceSphere[0], sphere0);
         if (NumSphere > 1)
-            Store(ref LocalSpaceSphere[1], sphere1 * invScale);
-        Store(ref LocalSpaceCurrCenter, current0 * invScale);
+            Store(ref LocalSpaceSphere[1], sphere1);
+        Store(ref LocalSpaceCurrCenter, current0);
         LocalSpacePos = space;
         LocalSpaceZ = _spaceMatrix.LocalUp();
     }
+
+    // Whether a coordinate is +0 (all bits clear).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool HasPositiveZero(Vector3 v) =>
+        (System.BitConverter.SingleToUInt32Bits(v.X) == 0) | (System.BitConverter.SingleToUInt32Bits(v.Y) == 0) | (System.BitConverter.SingleToUInt32Bits(v.Z) == 0);
 
     /// <summary>
     /// The matrix of the space last prepared by <see cref="CacheLocalSpaceSphere"/> (<see cref="LocalSpacePos"/>'s

@@ -158,4 +158,27 @@ public class SpherePathSpheresTests
         path.CacheLocalSpaceSphere(SpaceInCheckBlock, 1f);
         AssertLocalSpaceSpheres(path, one, SpaceInCheckBlock, 1f);
     }
+
+    /// <summary>
+    /// Within one landblock the zero block offsets are not added, which only turns −0 into +0; that matters
+    /// when the space's origin has a +0 coordinate: here the sphere centre's global X is −0 and the space sits
+    /// at X = +0, so retail's difference (−0 + 0) − (+0) is +0, and the transformed X keeps that sign.
+    /// </summary>
+    [Fact]
+    public void ANegativeZeroCoordinate_AgainstASpaceAtPositiveZero_KeepsRetailsSign()
+    {
+        Sphere[] sphere = [new(new Vector3(-0f, -1f, -1f), 0.5f)];
+        var at = new Position(0xA9B40031, new Frame(new Vector3(-0f, 10f, 5f)));
+        var space = new Position(0xA9B40031, new Frame(new Vector3(0f, 20f, 20f)));
+        var path = new Transition(new PhysicsWorld()).SpherePath;
+        path.InitSphere(sphere, 1f);
+        path.InitPath(null, at, at);
+        path.SetCheckPos(at, null);
+        Assert.True(float.IsNegative(path.GlobalSphere[0].Center.X), "the global X is -0");
+        path.CacheLocalSpaceSphere(space, 1f);
+        var expected = space.LocalToLocal(at, sphere[0].Center);
+        Assert.False(float.IsNegative(expected.X), "retail's local X is +0");
+        Assert.Equal(Bits(expected), Bits(path.LocalSpaceSphere[0].Center));
+        Assert.Equal(Bits(expected), Bits(path.LocalSpaceCurrCenter.Center));
+    }
 }
