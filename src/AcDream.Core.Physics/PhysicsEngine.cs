@@ -120,8 +120,7 @@ public sealed partial class PhysicsEngine
             return false;
         }
         refused = false;
-        // The plan normalized the carried sliding normal already.
-        Prepare(t, mover, state, plan.FirstKnown ? plan.SlidingUnit : SlidingUnit(t, state));
+        Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover);
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
@@ -176,19 +175,7 @@ public sealed partial class PhysicsEngine
         return Collect(t, ok, airborne);
     }
 
-    internal static void Prepare(Transition t, MoverDescription mover, in MoverState state) =>
-        Prepare(t, mover, state, SlidingUnit(t, state));
-
-    /// <summary>The state's sliding normal as the collision info carries it (its horizontal unit), or zero when it has none.</summary>
-    private static Vector3 SlidingUnit(Transition t, in MoverState state) =>
-        state.SlidingNormalValid ? t.CollisionInfo.HorizontalUnit(state.SlidingNormal) : Vector3.Zero;
-
-    /// <summary>
-    /// Seeds the transition from the mover and its carried state (retail CPhysicsObj's transition set-up),
-    /// with <paramref name="slidingUnit"/> the state's sliding normal's horizontal unit
-    /// (<see cref="SlidingUnit"/>): retail zeroes Z and normalizes (acclient CPhysicsObj.c:1695-1710).
-    /// </summary>
-    private static void Prepare(Transition t, MoverDescription mover, in MoverState state, Vector3 slidingUnit)
+    internal static void Prepare(Transition t, MoverDescription mover, in MoverState state)
     {
         t.SpherePath.Reset();
         t.CollisionInfo.Reset();
@@ -218,10 +205,7 @@ public sealed partial class PhysicsEngine
             t.InitLastKnownContactPlane(state.ContactPlaneCellId, state.ContactPlane, state.ContactPlaneIsWater);
         }
         if (state.SlidingNormalValid)
-        {
-            t.CollisionInfo.SlidingNormalValid = true;
-            t.CollisionInfo.SlidingNormal = slidingUnit;
-        }
+            t.InitSlidingNormal(state.SlidingNormal);
         if (state.Ground != GroundKind.None)
             t.InitGround(state.Ground, state.GroundObjectId);
     }

@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
 
 namespace AcDream.Core.Physics.Geometry;
 
@@ -43,8 +42,9 @@ internal static class VectorMath
     /// <summary>True when two vectors are the same bits (so -0 differs from 0, and a NaN equals its own bits).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static bool SameBits(Vector3 a, Vector3 b) =>
-        // One compare of the lanes as integers (the fourth lane is zero on both sides).
-        Vector128.EqualsAll(a.AsVector128().AsUInt32(), b.AsVector128().AsUInt32());
+        BitConverter.SingleToUInt32Bits(a.X) == BitConverter.SingleToUInt32Bits(b.X)
+        && BitConverter.SingleToUInt32Bits(a.Y) == BitConverter.SingleToUInt32Bits(b.Y)
+        && BitConverter.SingleToUInt32Bits(a.Z) == BitConverter.SingleToUInt32Bits(b.Z);
 
     /// <summary>
     /// The D of the plane with normal <paramref name="normal"/> through <paramref name="point"/>, −(N·P), as

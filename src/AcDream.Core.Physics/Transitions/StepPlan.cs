@@ -23,9 +23,4 @@ internal struct StepPlan
     public Vector3 FirstOffset;
     /// <summary>Whether the sliding normal stays valid after the first sub-step's constraint.</summary>
     public bool FirstSlidingNormalValid;
-    /// <summary>
-    /// With <see cref="FirstKnown"/>: the carried sliding normal's horizontal unit (<see cref="CollisionInfo.HorizontalUnit"/>),
-    /// which the collision info is then seeded with; zero when the state carries none.
-    /// </summary>
-    public Vector3 SlidingUnit;
 }

@@ -292,7 +292,7 @@ internal sealed partial class Transition
         plan = new StepPlan
         {
             Offset = offset, PerStep = perStep, NumSteps = numSteps,
-            FirstKnown = true, FirstOffset = first, FirstSlidingNormalValid = slidingValid, SlidingUnit = sliding,
+            FirstKnown = true, FirstOffset = first, FirstSlidingNormalValid = slidingValid,
         };
         return VectorMath.Dot(first, first) < PhysicsConstants.Epsilon * PhysicsConstants.Epsilon;
     }
@@ -475,4 +475,10 @@ internal sealed partial class Transition
         CollisionInfo.LastKnownContactPlaneIsWater = isWater;
         CollisionInfo.LastKnownContactPlaneCellId = cellId;
     }
+
+    /// <summary>
+    /// Sets the sliding normal carried from the previous frame: its horizontal part, normalized (retail
+    /// CPhysicsObj's transition set-up, acclient CPhysicsObj.c:1695-1710, zeroes Z before normalizing).
+    /// </summary>
+    public void InitSlidingNormal(Vector3 normal) => CollisionInfo.SetSlidingNormal(normal);
 }

@@ -2,7 +2,6 @@ using System;
 using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Validation;
@@ -25,9 +24,8 @@ internal static class Guard
     /// <summary>A point or vector: every component finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
     public static void Finite(Vector3 value, string field, string? suffix = null)
     {
-        // The three components at once (the fourth lane is zero): a NaN compares false in its lane, as in
-        // the scalar test.
-        if (!Vector128.LessThanOrEqualAll(Vector128.Abs(value.AsVector128()), Vector128.Create(InputLimits.MaxCoordinate)))
+        if (!(MathF.Abs(value.X) <= InputLimits.MaxCoordinate) || !(MathF.Abs(value.Y) <= InputLimits.MaxCoordinate)
+            || !(MathF.Abs(value.Z) <= InputLimits.MaxCoordinate))
             ThrowNotCoordinate(value, field, suffix);
     }
 
@@ -108,14 +106,10 @@ internal static class Guard
     /// A quick, sufficient test for <see cref="Physics.Frame.IsValidRotation"/>: that accepts a squared
     /// length within 5 × EPSILON (0.001) of one, summed in double and rounded to float; a float sum of the
     /// four squares, in any order, is within 3e-7 of that value, so one within 0.0009 of one is accepted
-    /// there too (the vector dot's order is one of them). Anything else (NaN included) takes the exact test.
+    /// there too. Anything else (NaN included) takes the exact test.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool SurelyValidRotation(Quaternion q)
-    {
-        var v = q.AsVector128();
-        return MathF.Abs(Vector128.Dot(v, v) - 1f) <= 0.0009f;
-    }
+    private static bool SurelyValidRotation(Quaternion q) => MathF.Abs((q.X * q.X + q.Y * q.Y) + (q.Z * q.Z + q.W * q.W) - 1f) <= 0.0009f;
 
     [MethodImpl(MethodImplOptions.NoInlining)]
     private static Quaternion CheckedRotation(Quaternion q, string field, string? suffix)
