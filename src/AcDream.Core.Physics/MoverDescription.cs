@@ -215,17 +215,25 @@ public readonly struct MoveResult
     /// The outcome of a transition, read from its collision info and path: an accepted move sets every
     /// field of the next state, a failed one keeps <paramref name="previous"/>. Written field by field
     /// into the result, without an intermediate state (a copy of ~140 bytes through the stack otherwise).
+    /// A move <paramref name="refused"/> before its first sub-step reads nothing from the transition
+    /// (which still holds an earlier move): nothing moved and nothing was hit.
     /// </summary>
-    internal MoveResult(Transition t, bool succeeded, in MoverState previous)
+    internal MoveResult(Transition t, bool succeeded, bool refused, in MoverState previous)
     {
-        var ci = t.CollisionInfo;
         Succeeded = succeeded;
+        if (refused)
+        {
+            _next = previous;
+            LastState = TransitionState.Collided;
+            CollidedObjects = ReadOnlyMemory<uint>.Empty;
+            return;
+        }
+        var ci = t.CollisionInfo;
         if (succeeded)
         {
-            var path = t.SpherePath;
-            _next.Position = path.CurPos;
-            if (path.CurCell is not null && path.CurCell.Id != path.CurPos.CellId)
-                _next.Position.CellId = path.CurCell.Id;
+            // Copied whole from where it lies, labelled already: a caller's first read of the position
+            // (as a whole) then takes it straight from this store.
+            _next.Position = t.ResolvedPosition();
             _next.ContactPlane = ci.ContactPlane;
             _next.ContactPlaneCellId = ci.ContactPlaneCellId;
             _next.ContactPlaneIsWater = ci.ContactPlaneIsWater;

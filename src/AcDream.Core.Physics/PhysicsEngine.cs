@@ -83,8 +83,22 @@ public sealed partial class PhysicsEngine
     /// </summary>
     private MoveResult ResolveCore(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall, bool trusted)
     {
+        // The result is built in one place, straight into the caller's copy: one result built on each way
+        // out is copied whole into a shared one, reading back what was just written a field at a time.
+        bool ok = Move(mover, state, target, framesStationaryFall, trusted, out bool refused);
+        return new MoveResult(_transition, ok, refused, state);
+    }
+
+    /// <summary>
+    /// The work of <see cref="ResolveCore"/>: checks the request and runs the transition; true when it was
+    /// accepted. <paramref name="refused"/>: the move was refused before its first sub-step and the
+    /// transition was left as it was.
+    /// </summary>
+    private bool Move(MoverDescription mover, in MoverState state, Position target, int framesStationaryFall, bool trusted, out bool refused)
+    {
+        refused = true;
         if (_lastRefusal.Matches(mover, state, target, _transition.World.Cells.RemovalCount))
-            return Refused(state);
+            return false;
         // The start position is read where it lies, copied only when its rotation must be normalized: a
         // copy is written a field at a time and the path reads it whole soon after, which waits for the
         // stores to land.
@@ -103,15 +117,16 @@ public sealed partial class PhysicsEngine
         if (t.RefusesBeforeFirstStep(mover, state, begin, target, out var plan))
         {
             _lastRefusal.Remember(mover, state, target, _transition.World.Cells.RemovalCount);
-            return Refused(state);
+            return false;
         }
+        refused = false;
         Prepare(t, mover, state);
         t.SpherePath.InitSphere(mover);
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
         bool ok = t.FindTransitionalPosition(in plan);
         if (ok) _acceptedTransitions++;
-        return new MoveResult(t, ok, state);
+        return ok;
     }
 
     /// <summary>
@@ -195,9 +210,5 @@ public sealed partial class PhysicsEngine
             t.InitGround(state.Ground, state.GroundObjectId);
     }
 
-    /// <summary>The result of a move refused before its first sub-step: nothing moved and nothing was hit.</summary>
-    private static MoveResult Refused(in MoverState previous) =>
-        new(false, previous, TransitionState.Collided, false, Vector3.Zero, false, ReadOnlyMemory<uint>.Empty, 0, false);
-
-    internal static MoveResult Collect(Transition t, bool ok, in MoverState previous) => new(t, ok, previous);
+    internal static MoveResult Collect(Transition t, bool ok, in MoverState previous) => new(t, ok, refused: false, previous);
 }

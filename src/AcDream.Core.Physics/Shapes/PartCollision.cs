@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Transitions;
@@ -31,12 +32,18 @@ internal static class PartCollision
         var toCheck = LandDefs.BlockOffset(path.CheckPos.CellId, row.PartPosition.CellId);
         var min = (walkableOnly ? row.WalkableMin : row.PolygonsMin) + toCheck;
         var max = (walkableOnly ? row.WalkableMax : row.PolygonsMax) + toCheck;
+        // A sphere reaches the box when, on each axis, centre + radius >= min and centre - radius <= max. The
+        // lanes make the very same float sums and comparisons, all at once; the fourth lane (centre 0 against
+        // -inf..+inf) passes unless the radius is NaN, when every axis fails too.
+        var low = Vector128.Create(min.X, min.Y, min.Z, float.NegativeInfinity);
+        var high = Vector128.Create(max.X, max.Y, max.Z, float.PositiveInfinity);
         for (int i = 0; i < path.NumSphere; i++)
         {
-            var s = path.GlobalSphere[i];
-            if (s.Center.X + s.Radius >= min.X && s.Center.X - s.Radius <= max.X
-                && s.Center.Y + s.Radius >= min.Y && s.Center.Y - s.Radius <= max.Y
-                && s.Center.Z + s.Radius >= min.Z && s.Center.Z - s.Radius <= max.Z)
+            ref readonly var s = ref path.GlobalSphere[i];
+            var centre = s.Center.AsVector128();
+            var radius = Vector128.Create(s.Radius);
+            var inside = Vector128.GreaterThanOrEqual(centre + radius, low) & Vector128.LessThanOrEqual(centre - radius, high);
+            if (inside.ExtractMostSignificantBits() == 0xF)
                 return true;
         }
         return false;

@@ -1,6 +1,7 @@
 using System;
 using System.Runtime.CompilerServices;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;
@@ -81,19 +82,12 @@ internal sealed class ObjectCull
     private void EnsureRegionHolds(Transition transition)
     {
         var path = transition.SpherePath;
-        SpheresBox(path, out var min, out var max);
         uint checkCell = path.CheckPos.CellId;
-        if (_hasRegion)
-        {
-            // A point's coordinates in landblock B's space are its coordinates in A's plus BlockOffset(B, A).
-            var toRegion = LandDefs.BlockOffset(_regionCell, checkCell);
-            var lo = min + toRegion;
-            var hi = max + toRegion;
-            if (lo.X >= _min.X && lo.Y >= _min.Y && lo.Z >= _min.Z && hi.X <= _max.X && hi.Y <= _max.Y && hi.Z <= _max.Z)
-                return;
-        }
+        if (_hasRegion && RegionHolds(path, LandDefs.BlockOffset(_regionCell, checkCell)))
+            return;
         // No region yet, or the spheres left it (the mover walked on, a long slide, a deep step): a new
         // region around where they are now, and new lists.
+        SpheresBox(path, out var min, out var max);
         float slack = Slack(transition);
         _min = min - new Vector3(slack, slack, slack + 1f);
         _max = max + new Vector3(slack, slack, slack);
@@ -107,6 +101,32 @@ internal sealed class ObjectCull
         _hasRegion = true;
         _cells = 0;
         _used = 0;
+    }
+
+    /// <summary>
+    /// True when the check spheres' box, moved into the region's landblock space by <paramref name="toRegion"/>
+    /// (a point's coordinates in landblock B's space are its coordinates in A's plus BlockOffset(B, A)), lies
+    /// in the region. Sphere by sphere, all axes at once: adding the offset is monotone in float, so the
+    /// box's least corner plus the offset is the least of the spheres' corners plus it, and the box is inside
+    /// exactly when every sphere's box is (a NaN fails either way).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private bool RegionHolds(SpherePath path, Vector3 toRegion)
+    {
+        var offset = toRegion.AsVector128();
+        // The fourth lane (centre 0 and offset 0 against -inf..+inf) passes unless the radius is NaN.
+        var low = Vector128.Create(_min.X, _min.Y, _min.Z, float.NegativeInfinity);
+        var high = Vector128.Create(_max.X, _max.Y, _max.Z, float.PositiveInfinity);
+        for (int i = 0; i < path.NumSphere; i++)
+        {
+            ref readonly var s = ref path.GlobalSphere[i];
+            var centre = s.Center.AsVector128();
+            var radius = Vector128.Create(s.Radius);
+            var inside = Vector128.GreaterThanOrEqual(centre - radius + offset, low) & Vector128.LessThanOrEqual(centre + radius + offset, high);
+            if (inside.ExtractMostSignificantBits() != 0xF)
+                return false;
+        }
+        return true;
     }
 
     /// <summary>

@@ -413,6 +413,20 @@ internal sealed partial class Transition
             && MathF.Abs(q.X) < e && MathF.Abs(q.Y) < e && MathF.Abs(q.Z) < e && MathF.Abs(q.W) < e;
     }
 
+    /// <summary>
+    /// Where the move ended: the current position, labelled with the current cell's id when they differ
+    /// (the id the result reports). Labelled in place rather than on the result's copy, so that the copy
+    /// is one whole store: a caller reads the position back as a whole at once (the next move's start),
+    /// and a whole read of a copy patched after it was written waits for both stores to land.
+    /// </summary>
+    internal ref readonly Position ResolvedPosition()
+    {
+        var path = SpherePath;
+        if (path.CurCell is { } cell && cell.Id != path.CurPos.CellId)
+            path.CurPos.CellId = cell.Id;
+        return ref path.CurPos;
+    }
+
     /// <summary>Accepts the check position as the current one.</summary>
     internal void SetCurrentCheckPos()
     {

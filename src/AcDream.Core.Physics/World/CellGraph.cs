@@ -196,6 +196,13 @@ public sealed class CellGraph
         else
         {
             var startLand = _land.Get(startId);
+            if (startLand is { Building: null } && !SearchInFull && AloneInSquare(startLand, spheres))
+            {
+                // The usual outdoor case: the list is the start cell alone, and it holds sphere 0's centre when
+                // the full search's test below says so (the same test, same bits).
+                cells.Add(startLand);
+                return findContaining && startLand.ContainsPoint(spheres[0].Center - LandDefs.BlockOffset(startId, startLand.Id)) ? startLand : null;
+            }
             start = startLand;
             AddOutsideCells(startId, startLand, spheres, cells);
             outsideAdded = true;
@@ -236,6 +243,47 @@ public sealed class CellGraph
                     return env;
                 }
         return landHolder;
+    }
+
+    /// <summary>
+    /// Searches as retail does even where <see cref="AloneInSquare"/> holds: for tests, which compare the two.
+    /// </summary>
+    internal bool SearchInFull { get; set; }
+
+    // The least distance from the square's edges AloneInSquare accepts (1 mm): far more than the rounding of
+    // AddOutsideCells' division, so its floor lands in the cell (see below).
+    private const float SquareRim = 1e-3f;
+
+    /// <summary>
+    /// True when <see cref="AddOutsideCells"/> would add <paramref name="land"/> alone (not retail; retail runs
+    /// the search): at least one sphere, each in the cell's square (the spheres are in the landblock space of
+    /// the land cell, which is the search's start cell) at least its radius (and 1 mm) from every edge. Then a
+    /// search from this cell, if it has no building, lists this cell alone, holds the centre where its
+    /// <see cref="LandCell.ContainsPoint"/> does and leaves <see cref="SpherePath.HitsInteriorCell"/> alone.
+    /// </summary>
+    /// <remarks>
+    /// Why exact, per sphere (x; y is the same), with w the square's west edge (24 × the cell column, exact):
+    /// d = x − w is computed in float. Rounding is monotone, so d in [r, 24 − r] with r ≥ 1 mm means the true
+    /// x − w lies in (0, 24); there x − w is exact (w is 0, or w ≤ x ≤ 2w: Sterbenz). The true x / 24 is
+    /// then at least 4e-5 from the integers around the cell column (below 8), far more than the half ulp
+    /// (2.4e-7) by which AddOutsideCells' division can round, so its floor is the column, its global cell
+    /// coordinates are this cell's, and its px = x − floor × 24 is exact and equals d. Its neighbour test
+    /// (px &gt; 24 − r, px &lt; r, with 24 − r rounded as here) then adds nothing. The centre test is the one
+    /// FindCellList's loop runs on the cell. A NaN or infinite coordinate or radius fails a comparison here.
+    /// </remarks>
+    internal static bool AloneInSquare(LandCell land, ReadOnlySpan<Sphere> spheres)
+    {
+        if (spheres.Length == 0)
+            return false;
+        var corner = land.SouthWest;
+        foreach (ref readonly var sphere in spheres)
+        {
+            float r = sphere.Radius, far = PhysicsConstants.LandCellLength - r;
+            float dx = sphere.Center.X - corner.X, dy = sphere.Center.Y - corner.Y;
+            if (!(r >= SquareRim && dx >= r && dx <= far && dy >= r && dy <= far))
+                return false;
+        }
+        return true;
     }
 
     // Apart so that the land path of FindCellList stays small (no rotation matrix in its frame).

@@ -37,6 +37,9 @@ public sealed class LandCell : Cell
         (_east, _north) = (corner.X + PhysicsConstants.LandCellLength, corner.Y + PhysicsConstants.LandCellLength);
     }
 
+    /// <summary>The south-west corner of the cell's square, landblock-local (X, Y; 24 m × the cell's column and row, exact).</summary>
+    internal Vector2 SouthWest => new(_west, _south);
+
     /// <summary>The cell's two terrain triangles (landblock-local), for the world queries.</summary>
     internal (Polygon First, Polygon Second) Triangles => (_first, _second);
 

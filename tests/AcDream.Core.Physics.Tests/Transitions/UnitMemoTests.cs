@@ -31,6 +31,33 @@ public class UnitMemoTests
         }
     }
 
+    /// <summary>
+    /// The memo's key test compares bits, lane by lane, all three lanes: a sign of zero or a NaN payload in
+    /// any one lane makes the vectors differ; the very same bits (a NaN too) are the same.
+    /// </summary>
+    [Theory]
+    [InlineData(0)]
+    [InlineData(1)]
+    [InlineData(2)]
+    public void SameBits_SeesEveryLane(int lane)
+    {
+        var a = new Vector3(0.25f, -3f, 7f);
+        var negativeZero = Vector3.Zero;
+        negativeZero[lane] = -0f;
+        var otherNaN = a;
+        otherNaN[lane] = BitConverter.UInt32BitsToSingle(0x7FC00001);
+        var nextUp = a;
+        nextUp[lane] = MathF.BitIncrement(a[lane]);
+        Assert.False(VectorMath.SameBits(Vector3.Zero, negativeZero));
+        Assert.False(VectorMath.SameBits(a, nextUp));
+        Assert.False(VectorMath.SameBits(a, otherNaN));
+        var canonicalNaN = a;
+        canonicalNaN[lane] = float.NaN;
+        Assert.False(VectorMath.SameBits(canonicalNaN, otherNaN));
+        Assert.True(VectorMath.SameBits(otherNaN, otherNaN));
+        Assert.True(VectorMath.SameBits(a, new Vector3(0.25f, -3f, 7f)));
+    }
+
     private static (uint, uint, uint) Bits(Vector3 v) =>
         (BitConverter.SingleToUInt32Bits(v.X), BitConverter.SingleToUInt32Bits(v.Y), BitConverter.SingleToUInt32Bits(v.Z));
 }

@@ -65,4 +65,29 @@ public class GuardMessageTests
         Assert.Equal(normalized ? Quaternion.Identity : q, frame.Orientation);
         Assert.Equal(normalized ? Quaternion.Identity : q, Guard.Rotation(q, "target"));
     }
+    [Theory]
+    // Each component on its own (the check tests the three lanes at once): NaN, ±∞, just beyond ±100 km.
+    [InlineData(0, float.NaN)]
+    [InlineData(1, float.NaN)]
+    [InlineData(2, float.NaN)]
+    [InlineData(0, float.NegativeInfinity)]
+    [InlineData(1, float.PositiveInfinity)]
+    [InlineData(2, float.NegativeInfinity)]
+    [InlineData(0, 100_000.01f)]
+    [InlineData(1, -100_000.01f)]
+    [InlineData(2, 100_000.01f)]
+    public void Finite_RefusesABadValueInAnyComponent(int component, float bad)
+    {
+        var v = new Vector3(1, -2, 3);
+        v[component] = bad;
+        var e = Assert.Throws<ArgumentException>(() => Guard.Finite(v, "state.position", ".origin"));
+        Assert.StartsWith("state.position.origin: ", e.Message, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void Finite_AcceptsEveryComponentAtTheLimit()
+    {
+        Guard.Finite(new Vector3(InputLimits.MaxCoordinate, -InputLimits.MaxCoordinate, InputLimits.MaxCoordinate), "v");
+        Guard.Finite(new Vector3(-0f, float.Epsilon, -InputLimits.MaxCoordinate), "v");
+    }
 }
