@@ -34,10 +34,13 @@ public sealed class WorldQuery
 
     private readonly List<Cell> _cells = new(32);
     private readonly CellArray _cellArray = new();
-    // The objects a cast has swept: an object listed in several of its cells (a door across a doorway's
-    // portal) is swept once. A second sweep of the same rows could only tie or trail the first, and the
-    // first found wins a tie, so skipping it changes no answer.
-    private readonly HashSet<uint> _swept = new();
+    // The objects a cast has swept (their ids, the first _sweptCount entries): an object listed in several
+    // of its cells (a door across a doorway's portal) is swept once. A second sweep of the same rows could
+    // only tie or trail the first, and the first found wins a tie, so skipping it changes no answer. A cast
+    // sweeps a handful of objects, so a scan of a flat array beats a hash set's hashing and buckets; it
+    // grows (doubling) only when a cast sweeps more objects than ever before.
+    private uint[] _swept = new uint[16];
+    private int _sweptCount;
     private readonly PhysicsEngine _viewer;
     private MoverDescription? _viewerMover;
     private int _landCount;
@@ -239,11 +242,11 @@ public sealed class WorldQuery
         var best = ShapeSweep.Best.None(1f);
         var kind = SurfaceKind.None;
         bool manyCells = _cells.Count > 1;
-        if (manyCells)
-            _swept.Clear();
+        _sweptCount = 0;
         uint cellId = 0, objectId = 0;
-        foreach (var cell in _cells)
+        for (int n = 0; n < _cells.Count; n++)
         {
+            var cell = _cells[n];
             var shift = LandDefs.BlockOffset(frameCell, cell.Id);
             if ((layers & QueryLayers.Environment) != 0)
             {
@@ -273,7 +276,7 @@ public sealed class WorldQuery
                     continue;
                 var rows = objects.RowsOf(o);
                 if (rows.Length == 0 || !Selected(rows[0], layers, ignoreId, out var rung)
-                    || (manyCells && !_swept.Add(rows[0].EntityId)))
+                    || (manyCells && !FirstSweep(rows[0].EntityId)))
                     continue;
                 for (int i = 0; i < rows.Length; i++)
                     if (rows[i].Kind == rung && SweepRow(rows[i], frameCell, c, d, r, walkableOnly, ref best))
@@ -287,6 +290,18 @@ public sealed class WorldQuery
         }
         var center = c + d * best.Fraction;
         hit = new SurfaceHit(best.Fraction, center, center - best.Normal * r, best.Normal, cellId, objectId, kind);
+        return true;
+    }
+
+    /// <summary>Records that this cast sweeps object <paramref name="id"/>; false when it already has.</summary>
+    private bool FirstSweep(uint id)
+    {
+        var swept = _swept.AsSpan(0, _sweptCount);
+        if (swept.Contains(id))
+            return false;
+        if (_sweptCount == _swept.Length)
+            Array.Resize(ref _swept, _swept.Length * 2);
+        _swept[_sweptCount++] = id;
         return true;
     }
 
@@ -338,8 +353,9 @@ public sealed class WorldQuery
         var c = center.Origin;
         CollectCells(center, Vector3.Zero, extent, reach);
         int count = 0;
-        foreach (var cell in _cells)
+        for (int n = 0; n < _cells.Count; n++)
         {
+            var cell = _cells[n];
             var objects = World.Objects.ObjectsInCell(cell.Id);
             SweptBox(c - LandDefs.BlockOffset(frameCell, cell.Id), Vector3.Zero, extent, out var boxMin, out var boxMax);
             for (int o = 0; o < objects.Count && count < results.Length; o++)
