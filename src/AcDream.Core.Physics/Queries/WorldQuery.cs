@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
 using AcDream.Core.Physics.Shapes;
@@ -423,6 +424,7 @@ public sealed class WorldQuery
     /// are not visited: a cast or overlap beside a crowded cell costs a box test per object there instead of a
     /// placed bounding sphere per row. Changes no result.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // its outs then stay in registers, not in the caller's zeroed frame
     private static void SweptBox(Vector3 c, Vector3 d, Vector3 extent, out Vector3 min, out Vector3 max)
     {
         min = Vector3.Min(c, c + d) - extent;
