@@ -2,7 +2,8 @@
 # The determinism check on ARM64, under an emulator: publishes the determinism program
 # (tests/AcDream.Core.Physics.Determinism) self-contained for linux-arm64, runs it under qemu-aarch64-static,
 # runs the same program natively, and compares the two outputs line by line (every fuzz frame's raw bits,
-# every built-in scene mover's hash, each fuzz case's input hash, PortableMath's results). It also checks
+# every built-in scene mover's hash, each fuzz case's input hash, PortableMath's results), and the native
+# program once more with the hardware intrinsics off (the scalar fallbacks of the vector paths). It also checks
 # the emulated run's area and scene lines against the committed x64 data (tests/.../Robustness/Determinism).
 #
 # Needs (installed when missing, on Debian, as root or through sudo): qemu-user-static and the arm64
@@ -71,6 +72,14 @@ echo "+ native run"
 t0=$(date +%s.%N)
 dotnet "$work/native/AcDream.Core.Physics.Determinism.dll" >"$work/native.txt" || fail "the native run exited with $?"
 t1=$(date +%s.%N)
+# The vector paths' scalar fallbacks (taken where 128/256-bit vectors are not accelerated) on this machine too:
+# the same program with the hardware intrinsics switched off must print the same values.
+echo "+ native run, DOTNET_EnableHWIntrinsic=0 (the scalar fallbacks)"
+DOTNET_EnableHWIntrinsic=0 dotnet "$work/native/AcDream.Core.Physics.Determinism.dll" >"$work/scalar.txt" || fail "the scalar run exited with $?"
+if ! cmp -s <(grep -v '^#' "$work/native.txt") <(grep -v '^#' "$work/scalar.txt"); then
+  echo "check-arm64: the vector and scalar paths differ on x64: $(cmp <(grep -v '^#' "$work/native.txt") <(grep -v '^#' "$work/scalar.txt") 2>&1 || true)" >&2
+  exit 1
+fi
 echo "+ DOTNET_EnableWriteXorExecute=0 qemu-aarch64-static .../AcDream.Core.Physics.Determinism"
 DOTNET_EnableWriteXorExecute=0 timeout 1200 qemu-aarch64-static "$work/arm64/AcDream.Core.Physics.Determinism" >"$work/arm64.txt" ||
   fail "the emulated ARM64 run exited with $? (stderr above)"

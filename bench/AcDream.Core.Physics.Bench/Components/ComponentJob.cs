@@ -76,7 +76,6 @@ public static class ComponentJob
         private readonly MoverState _state;
         private readonly Position _target;
         private readonly World.Cell _cell;
-        private readonly World.ShadowObjectRegistry.CellObjects _objects;
         private readonly World.ShadowEntry _door;
         private float _sink;
 
@@ -100,8 +99,7 @@ public static class ComponentJob
             Setup();
             _t.SpherePath.SetCheckPos(_t.SpherePath.CurPos, _t.SpherePath.CurCell);
             _cell = _t.SpherePath.CheckCell!;
-            _objects = world.Objects.ObjectsInCell(_cell.Id);
-            _door = _objects.RowsOf(0)[0];
+            _door = world.Objects.ObjectsInCell(_cell.Id).RowsOf(0)[0];
         }
 
         private World.Cell Validate()
@@ -134,7 +132,7 @@ public static class ComponentJob
                 case "collect": _sink += PhysicsEngine.Collect(_t, true, _state).Next.Position.Frame.Origin.Y; break;
                 case "cell-array": _sink += _t.BuildCellArray(true)!.Id; break;
                 case "land": _sink += (int)_cell.FindEnvCollisions(_t); break;
-                case "objects": _sink += (int)ObjectCollisions.FindInCell(_t, _cell.Id, _objects); break;
+                case "objects": _sink += (int)ObjectCollisions.FindInCell(_t, _cell.Id); break;
                 case "door": _sink += (int)PartCollision.Collide(_t, _door.Shape.Model!, _door.PartPosition, _door.Shape.ModelScale); break;
                 case "local-space": path.CacheLocalSpaceSphere(_door.PartPosition, 1f); break;
                 case "current-spheres": path.CacheGlobalCurrCenter(); break;

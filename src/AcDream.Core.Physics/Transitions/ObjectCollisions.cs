@@ -63,18 +63,19 @@ internal static class ObjectCollisions
     /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
     /// non-OK result returns. An initial placement tests no object.
     /// </summary>
-    internal static TransitionState FindInCell(Transition transition, uint cellId, ShadowObjectRegistry.CellObjects objects)
+    internal static TransitionState FindInCell(Transition transition, uint cellId)
     {
-        if (transition.SpherePath.InsertType == InsertType.InitialPlacement || objects.Count == 0)
+        if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             return TransitionState.OK;
-        // Only the objects the check spheres can reach are tested, in the cell's order; for the others every
-        // retail test would return OK and change nothing (see ObjectCull).
-        var candidates = transition.Cull.Candidates(transition, cellId, objects);
         if (transition.Observer is { } observer)
-            return FindInCellObserved(transition, objects, candidates, observer);
-        foreach (int i in candidates)
+            return FindInCellObserved(transition, cellId, observer);
+        // Only the objects the check spheres can reach are tested, in the cell's order; for the others every
+        // retail test would return OK and change nothing (see ObjectCull). The cull keeps each candidate's
+        // rows, so a cell already listed is walked without reading the registry (a cell with no candidate
+        // ends here).
+        foreach (var rows in transition.Cull.CandidateRows(transition, cellId))
         {
-            var state = FindObjectCollisionsUnlessSelf(transition, objects.RowsOf(i));
+            var state = FindObjectCollisionsUnlessSelf(transition, rows);
             if (state != TransitionState.OK)
                 return state;
         }
@@ -82,8 +83,12 @@ internal static class ObjectCollisions
     }
 
     /// <summary>As <see cref="FindInCell"/>, reporting the objects out of reach as skipped (<see cref="SkipReason.OutOfReach"/>).</summary>
-    private static TransitionState FindInCellObserved(Transition transition, ShadowObjectRegistry.CellObjects objects, ReadOnlySpan<int> candidates, ITransitionObserver observer)
+    private static TransitionState FindInCellObserved(Transition transition, uint cellId, ITransitionObserver observer)
     {
+        var objects = transition.World.Objects.ObjectsInCell(cellId);
+        if (objects.Count == 0)
+            return TransitionState.OK;
+        var candidates = transition.Cull.Candidates(transition, cellId);
         uint self = transition.ObjectInfo.ObjectId;
         int next = 0;
         for (int i = 0; i < objects.Count; i++)

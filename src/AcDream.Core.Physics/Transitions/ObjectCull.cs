@@ -28,6 +28,11 @@ internal sealed class ObjectCull
     private int[] _counts = new int[8];
     private int _cells;
     private int[] _candidates = new int[64];
+    // Beside each candidate index, that object's rows (the registry's array for it): the pass reads them
+    // from here instead of through the cell's list, the slot and the record. Valid while the registry's
+    // version is the one the lists were made at (a new version drops the lists; an object's rows array is
+    // replaced only by re-registering it, which changes the version).
+    private ShadowEntry[][] _rows = new ShadowEntry[64][];
     private int _used;
 
     private int _version = -1;
@@ -49,20 +54,40 @@ internal sealed class ObjectCull
     /// The indices, ascending, of the objects of cell <paramref name="cellId"/> that the check spheres of
     /// <paramref name="transition"/> may touch now.
     /// </summary>
-    public ReadOnlySpan<int> Candidates(Transition transition, uint cellId, in ShadowObjectRegistry.CellObjects objects)
+    public ReadOnlySpan<int> Candidates(Transition transition, uint cellId)
     {
-        int version = transition.World.Objects.Version;
+        int k = ListOf(transition, cellId);
+        return _candidates.AsSpan(_starts[k], _counts[k]);
+    }
+
+    /// <summary>
+    /// The rows of the objects <see cref="Candidates"/> names, in the same order (one array per object):
+    /// the object pass reads this one array. The registry is read only when the cell is not listed yet.
+    /// </summary>
+    public ReadOnlySpan<ShadowEntry[]> CandidateRows(Transition transition, uint cellId)
+    {
+        int k = ListOf(transition, cellId);
+        return _rows.AsSpan(_starts[k], _counts[k]);
+    }
+
+    /// <summary>Where the cell's list is in <see cref="_cellIds"/>, made first when it is not there.</summary>
+    private int ListOf(Transition transition, uint cellId)
+    {
+        var objects = transition.World.Objects;
+        int version = objects.Version;
         if (version != _version)
         {
-            // The registry changed since the lists were made (only between transitions, or in tests).
+            // The registry changed since the lists were made (only between transitions, or in tests): the
+            // indices and rows arrays kept may name objects no longer there.
             Reset();
+            Array.Clear(_rows);
             _version = version;
         }
         EnsureRegionHolds(transition);
         for (int i = 0; i < _cells; i++)
             if (_cellIds[i] == cellId)
-                return _candidates.AsSpan(_starts[i], _counts[i]);
-        return List(cellId, objects);
+                return i;
+        return List(cellId, objects.ObjectsInCell(cellId));
     }
 
     /// <summary>The check spheres' box, in the landblock space of the check cell.</summary>
@@ -142,7 +167,7 @@ internal sealed class ObjectCull
         return MathF.Min(move, 100f) + MathF.Max(mover.StepUpHeight, mover.StepDownHeight) + 0.5f;
     }
 
-    private ReadOnlySpan<int> List(uint cellId, in ShadowObjectRegistry.CellObjects objects)
+    private int List(uint cellId, in ShadowObjectRegistry.CellObjects objects)
     {
         if (_cells == _cellIds.Length)
         {
@@ -159,13 +184,17 @@ internal sealed class ObjectCull
             if (!objects.Reaches(i, min, max))
                 continue;
             if (_used == _candidates.Length)
+            {
                 Array.Resize(ref _candidates, _used * 2);
-            _candidates[_used++] = i;
+                Array.Resize(ref _rows, _used * 2);
+            }
+            _candidates[_used] = i;
+            _rows[_used] = objects.RowArrayOf(i);
+            _used++;
         }
         _cellIds[_cells] = cellId;
         _starts[_cells] = start;
         _counts[_cells] = _used - start;
-        _cells++;
-        return _candidates.AsSpan(start, _used - start);
+        return _cells++;
     }
 }

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 
 namespace AcDream.Core.Physics.Transitions;
@@ -22,16 +23,20 @@ internal sealed class RotationMatrixMemo
     /// <summary>The matrix of <paramref name="frame"/>'s orientation: bit for bit <see cref="Frame.Matrix"/>.</summary>
     public ref readonly RotationMatrix Of(in Frame frame)
     {
-        var key = frame.OrientationKey;
-        if (!_valid || !key.Equals(_for))
-        {
-            _matrix = frame.Matrix;
-            _for = key;
-            _valid = true;
-            _upValid = false;
-            _lanes = new RotationMatrixLanes(_matrix);
-        }
+        if (!_valid || !frame.OrientationKey.Equals(_for))
+            Build(frame);
         return ref _matrix;
+    }
+
+    // Out of line: the callers inline Of, and the widening's temporaries would otherwise sit in their frames.
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private void Build(in Frame frame)
+    {
+        _matrix = frame.Matrix;
+        _for = frame.OrientationKey;
+        _valid = true;
+        _upValid = false;
+        _lanes = new RotationMatrixLanes(_matrix);
     }
 
     /// <summary>The matrix of <paramref name="frame"/>'s orientation, widened for side-by-side transforms.</summary>

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 
@@ -207,8 +208,12 @@ internal sealed class SpherePath
         for (int i = 0; i < NumSphere; i++)
             LocalSphere[i] = new Sphere(spheres[i].Center * scale, spheres[i].Radius * scale);
         LocalLowPoint = LocalSphere[0].Center - new Vector3(0, 0, LocalSphere[0].Radius);
+        // Side by side for the transforms: lane 2 is the low point for the global spheres, and the
+        // current sphere 0 for the local-space ones (hence radius 0 there too).
+        _localPoints = PointLanes.Of(LocalSphere[0].Center, LocalSphere[1].Center, LocalLowPoint, Vector3.Zero);
+        _radii = Vector128.Create(LocalSphere[0].Radius, LocalSphere[1].Radius, LocalSphere[0].Radius, 0f);
         // Everything remembered for a position depends on the spheres too.
-        _lastCurrent.Valid = _curFresh.Valid = _checkFresh.Valid = false;
+        _curFresh.Valid = _checkFresh.Valid = false;
         SolidHit.Forget();
     }
 
@@ -238,82 +243,41 @@ internal sealed class SpherePath
     /// <summary>Recomputes the spheres at the current position.</summary>
     public void CacheGlobalCurrCenter()
     {
-        // A move usually starts where the previous one ended, whose spheres were computed for the very same
-        // position (and spheres: InitSphere forgets them when the spheres change). GlobalCurrCenter is
-        // written only here and Reset leaves it, so it still holds them: the same transforms of the same
-        // inputs would give the same bits.
-        ref var last = ref _lastCurrent;
-        if (!last.Valid || !Position.SameBits(CurPos, last.For))
+        // A move usually starts where the previous one ended, and accepting a sub-step makes the check
+        // position current: the points were then computed for this very position already (the same
+        // transforms of the same inputs give the same bits).
+        ref var cur = ref _curFresh;
+        if (!cur.Valid || !Position.SameBits(CurPos, cur.For))
         {
-            ref readonly var matrix = ref _moverMatrix.LanesOf(CurPos.Frame);
-            // Accepting a sub-step makes the check position current: the object tests there usually
-            // computed its sphere centres already (the same expression on the same inputs).
-            bool fresh = _checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For);
-            for (int i = 0; i < NumSphere; i++)
-                GlobalCurrCenter[i] = new Sphere(fresh ? _checkFresh.Centres[i] : matrix.PositionToGlobal(LocalSphere[i].Center, CurPos.Frame.Origin),
-                    LocalSphere[i].Radius);
-            // Retail sets the check position to the current one right after this (init_path, and accepting
-            // a sub-step): CacheGlobalSphere copies these instead of computing them again.
-            last.LowPoint = matrix.PositionToGlobal(LocalLowPoint, CurPos.Frame.Origin);
-            last.For = CurPos;
-            last.Valid = true;
+            if (_checkFresh.Valid && Position.SameBits(CurPos, _checkFresh.For))
+                cur = _checkFresh;
+            else
+                Compute(ref cur, CurPos);
         }
-        // These are also the first half of Position::localtolocal for the current position (the same
-        // expression on the same inputs), which the object tests would otherwise compute again.
-        if (!_curFresh.Valid || !Position.SameBits(CurPos, _curFresh.For))
-            Remember(ref _curFresh, CurPos, GlobalCurrCenter);
+        cur.Points.Rows(_radii, out var sphere0, out var sphere1, out _);
+        Store(ref GlobalCurrCenter[0], sphere0);
+        if (NumSphere > 1)
+            Store(ref GlobalCurrCenter[1], sphere1);
     }
-
-    /// <summary>
-    /// The position <see cref="GlobalCurrCenter"/> was last computed for, and its low point; kept from one
-    /// move to the next, forgotten when the spheres change.
-    /// </summary>
-    private struct CurrentSpheres
-    {
-        public bool Valid;
-        public Position For;
-        public Vector3 LowPoint;
-    }
-
-    private CurrentSpheres _lastCurrent;
 
     /// <summary>Recomputes the spheres at the check position.</summary>
     public void CacheGlobalSphere()
     {
-        if (_lastCurrent.Valid && Position.SameBits(CheckPos, _lastCurrent.For))
-        {
-            // The same transforms of the same inputs: copying gives the very same bits.
-            for (int i = 0; i < NumSphere; i++)
-                GlobalSphere[i] = GlobalCurrCenter[i];
-            GlobalLowPoint = _lastCurrent.LowPoint;
-            return;
-        }
-        ref readonly var matrix = ref _moverMatrix.LanesOf(CheckPos.Frame);
-        if (_checkFresh.Valid && Position.SameBits(CheckPos, _checkFresh.For))
-        {
-            // The centres were computed for this very position already (an object test there, or a step-up
-            // restoring the position it left): the same expression on the same inputs.
-            for (int i = 0; i < NumSphere; i++)
-                GlobalSphere[i] = new Sphere(_checkFresh.Centres[i], LocalSphere[i].Radius);
-            GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
-            return;
-        }
-        for (int i = 0; i < NumSphere; i++)
-        {
-            GlobalSphere[i].Radius = LocalSphere[i].Radius;
-            GlobalSphere[i].Center = matrix.PositionToGlobal(LocalSphere[i].Center, CheckPos.Frame.Origin);
-        }
-        GlobalLowPoint = matrix.PositionToGlobal(LocalLowPoint, CheckPos.Frame.Origin);
-        Remember(ref _checkFresh, CheckPos, GlobalSphere);
+        // Usually the current position (retail sets the check position to it after init_path and after
+        // accepting a sub-step), or one an object test or a step-up computed already.
+        ref readonly var points = ref _curFresh.Valid && Position.SameBits(CheckPos, _curFresh.For)
+            ? ref _curFresh.Points
+            : ref PointsAt(CheckPos, ref _checkFresh);
+        points.Rows(_radii, out var sphere0, out var sphere1, out var lowPoint);
+        Store(ref GlobalSphere[0], sphere0);
+        if (NumSphere > 1)
+            Store(ref GlobalSphere[1], sphere1);
+        GlobalLowPoint = lowPoint.AsVector3();
     }
 
-    private void Remember(ref FreshCentres fresh, in Position position, in SpherePair spheres)
-    {
-        for (int i = 0; i < NumSphere; i++)
-            fresh.Centres[i] = spheres[i].Center;
-        fresh.For = position;
-        fresh.Valid = true;
-    }
+    // A sphere is its centre then its radius: one row (x, y, z, radius).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Store(ref Sphere sphere, Vector128<float> row) => Unsafe.As<Sphere, Vector128<float>>(ref sphere) = row;
 
     // The mover's orientation changes rarely along a path, and the spaces tested one after another often
     // share one: each keeps the last matrix built.
@@ -333,25 +297,46 @@ internal sealed class SpherePath
     /// </summary>
     public void CacheLocalSpaceSphere(in Position space, float scale)
     {
-        float invScale = 1.0f / scale;
         ref readonly var spaceMatrix = ref _spaceMatrix.LanesOf(space.Frame);
         // Position::localtolocal is the other position's localtoglobal, then this one's globaltolocal. The
-        // first half is the same for every object tested from one path position: it is the fresh sphere
-        // centres, computed once per position (same expression, same bits) instead of once per object.
-        ref readonly var curCentres = ref CentresAt(CurPos, ref _curFresh);
-        ref readonly var checkCentres = ref CentresAt(CheckPos, ref _checkFresh);
-        var toSpaceFromCheck = LandDefs.BlockOffset(space.CellId, CheckPos.CellId);
-        for (int i = 0; i < NumSphere; i++)
+        // first half is the same for every object tested from one path position: it is the points
+        // remembered for the position (same expression, same bits) instead of once per object.
+        ref readonly var cur = ref PointsAt(CurPos, ref _curFresh);
+        ref readonly var check = ref PointsAt(CheckPos, ref _checkFresh);
+        // Lanes 0 and 1: the check spheres; lane 2: the current sphere 0. Each crosses into the space's
+        // landblock (a float sum, as retail), then all three go through the space's transpose at once.
+        var points = check.WithLane2From(cur);
+        uint block = space.CellId >> 16;
+        if (block != CheckPos.CellId >> 16 || block != CurPos.CellId >> 16 || HasPositiveZero(space.Frame.Origin))
         {
-            LocalSpaceSphere[i].Radius = LocalSphere[i].Radius * invScale;
-            LocalSpaceSphere[i].Center = spaceMatrix.FrameToLocal(toSpaceFromCheck + checkCentres[i], space.Frame.Origin) * invScale;
+            var offsets = PointLanes.Pairs(LandDefs.BlockOffset(space.CellId, CheckPos.CellId), LandDefs.BlockOffset(space.CellId, CurPos.CellId));
+            points = new PointLanes(offsets.X + points.X, offsets.Y + points.Y, offsets.Z + points.Z);
         }
-        var toSpaceFromCur = LandDefs.BlockOffset(space.CellId, CurPos.CellId);
-        LocalSpaceCurrCenter = new Sphere(spaceMatrix.FrameToLocal(toSpaceFromCur + curCentres[0], space.Frame.Origin) * invScale,
-            LocalSphere[0].Radius * invScale);
+        // Else every offset is zero, and adding it is left out: x + 0 is x except that −0 becomes +0, and the
+        // difference with the space's origin that follows is the same for either zero unless that origin
+        // coordinate is +0 (+0 − +0 = +0, −0 − +0 = −0; against −0 or any other value both give the same).
+        var inSpace = spaceMatrix.FrameToLocal(points, space.Frame.Origin);
+        inSpace.Rows(_radii, out var sphere0, out var sphere1, out var current0);
+        if (scale != 1f)
+        {
+            // Dividing by a scale of 1 would multiply by 1, which changes no value.
+            var invScale = Vector128.Create(1.0f / scale);
+            sphere0 *= invScale;
+            sphere1 *= invScale;
+            current0 *= invScale;
+        }
+        Store(ref LocalSpaceSphere[0], sphere0);
+        if (NumSphere > 1)
+            Store(ref LocalSpaceSphere[1], sphere1);
+        Store(ref LocalSpaceCurrCenter, current0);
         LocalSpacePos = space;
         LocalSpaceZ = _spaceMatrix.LocalUp();
     }
+
+    // Whether a coordinate is +0 (all bits clear).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static bool HasPositiveZero(Vector3 v) =>
+        (System.BitConverter.SingleToUInt32Bits(v.X) == 0) | (System.BitConverter.SingleToUInt32Bits(v.Y) == 0) | (System.BitConverter.SingleToUInt32Bits(v.Z) == 0);
 
     /// <summary>
     /// The matrix of the space last prepared by <see cref="CacheLocalSpaceSphere"/> (<see cref="LocalSpacePos"/>'s
@@ -359,38 +344,42 @@ internal sealed class SpherePath
     /// </summary>
     public ref readonly RotationMatrix LocalSpaceMatrix => ref _spaceMatrix.Of(LocalSpacePos.Frame);
 
-    /// <summary>The mover's sphere centres at a position (Position::localtoglobal), and the position they are for.</summary>
-    private struct FreshCentres
+    /// <summary>
+    /// The mover's points (sphere centres, low point) at a position, Position::localtoglobal, and the
+    /// position they are for; kept from one move to the next, forgotten when the spheres change.
+    /// </summary>
+    private struct FreshPoints
     {
         public bool Valid;
         public Position For;
-        public CentrePair Centres;
+        public PointLanes Points;
     }
 
-    [System.Runtime.CompilerServices.InlineArray(2)]
-    private struct CentrePair
-    {
-        private Vector3 _first;
-    }
+    // The mover's sphere centres and low point in its own space (lanes 0, 1, 2), and the radii for rows.
+    private PointLanes _localPoints;
+    private Vector128<float> _radii;
 
-    private FreshCentres _curFresh, _checkFresh;
+    // The points at the current position and at the last check position computed.
+    private FreshPoints _curFresh, _checkFresh;
 
     /// <summary>
-    /// The position's matrix · (local sphere centre) + origin, for each sphere,
-    /// exactly as <see cref="Position.LocalToLocal(in RotationMatrix, in Position, in RotationMatrix, Vector3)"/>
+    /// The position's matrix · (local point) + origin, for each point, exactly as
+    /// <see cref="Position.LocalToLocal(in RotationMatrix, in Position, in RotationMatrix, Vector3)"/>
     /// computes its first half; recomputed only when the position differs in any bit from the last one.
     /// </summary>
-    private ref readonly CentrePair CentresAt(in Position position, ref FreshCentres fresh)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private ref readonly PointLanes PointsAt(in Position position, ref FreshPoints fresh)
     {
         if (!fresh.Valid || !Position.SameBits(position, fresh.For))
-        {
-            ref readonly var matrix = ref _moverMatrix.LanesOf(position.Frame);
-            for (int i = 0; i < NumSphere; i++)
-                fresh.Centres[i] = matrix.PositionToGlobal(LocalSphere[i].Center, position.Frame.Origin);
-            fresh.For = position;
-            fresh.Valid = true;
-        }
-        return ref fresh.Centres;
+            Compute(ref fresh, position);
+        return ref fresh.Points;
+    }
+
+    private void Compute(ref FreshPoints fresh, in Position position)
+    {
+        fresh.Points = _moverMatrix.LanesOf(position.Frame).PositionToGlobal(_localPoints, position.Frame.Origin);
+        fresh.For = position;
+        fresh.Valid = true;
     }
 
     /// <summary>True when the remembered walkable polygon still holds the mover (or there is none).</summary>

@@ -255,7 +255,7 @@ internal sealed partial class Transition
             if (state != TransitionState.OK)
                 return state;
         }
-        return ObjectCollisions.FindInCell(this, cell.Id, World.Objects.ObjectsInCell(cell.Id));
+        return ObjectCollisions.FindInCell(this, cell.Id);
     }
 
     /// <summary>

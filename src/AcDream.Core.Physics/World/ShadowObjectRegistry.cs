@@ -400,6 +400,12 @@ public sealed class ShadowObjectRegistry
         public ReadOnlySpan<ShadowEntry> RowsOf(int index) => _slots![index].Record.Rows;
 
         /// <summary>
+        /// The array holding the <paramref name="index"/>-th object's rows. The object keeps this array while
+        /// it is registered (moves rewrite it in place), so a holder may keep it until <see cref="Version"/> changes.
+        /// </summary>
+        public ShadowEntry[] RowArrayOf(int index) => _slots![index].Record.Rows;
+
+        /// <summary>
         /// True when the <paramref name="index"/>-th object's reach box (this cell's landblock space) meets
         /// the box <paramref name="min"/>..<paramref name="max"/>.
         /// </summary>

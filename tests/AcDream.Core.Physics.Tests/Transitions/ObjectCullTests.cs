@@ -75,6 +75,27 @@ public class ObjectCullTests
     }
 
     [Fact]
+    public void AnObjectReplacedBetweenFrames_TheNewOneIsHit_NotTheRowsOfTheOld()
+    {
+        // A barrel beside the path, within the cull's reach (listed as a candidate with its rows) but never
+        // touched; the walk keeps the same region and lists from frame to frame.
+        var world = TestGeometry.FlatWorld();
+        world.Objects.Register(BarrelId, Barrel, TestGeometry.At(91.5f, 90.5f, 0f), 1f, PhysicsState.ReportCollisions);
+        var player = TestScenes.Player(world, 90, 90);
+        player.Walk(new Vector3(0, 0.1f, 0), 2);
+        Assert.DoesNotContain(player.Frames, f => f.Collided.Length > 0);
+
+        // Another object takes the barrel's place in the cell's list, right in front of the player: the
+        // cull's kept lists (indices and rows) must be made again, or the old barrel's rows are tested.
+        const uint other = BarrelId + 1;
+        Assert.True(world.Objects.Unregister(BarrelId));
+        world.Objects.Register(other, Barrel, TestGeometry.At(player.Origin.X, player.Origin.Y + 0.9f, 0f), 1f, PhysicsState.ReportCollisions);
+        player.Walk(new Vector3(0, 0.1f, 0), 1);
+
+        Assert.Contains(other, player.Frames[^1].Collided);
+    }
+
+    [Fact]
     public void AnObjectAcrossALandblockSeam_IsHit()
     {
         // A 0.5 m ball 1 m east of the seam between landblocks 0xA9B4 and 0xAAB4 (global x 193 from
