@@ -61,4 +61,25 @@ public class CastCullTests
         Assert.Equal((103f - 100.402f) / 6f, outward.Fraction, 4);
         AssertVec.Near(new Vector3(0, 1, 0), outward.Normal, 1e-4f);
     }
+
+    [Fact]
+    public void RayCast_PastFortyBallsBesideIt_HitsTheBallOnItsLine()
+    {
+        // More objects in the cast's box than the swept-object set first holds (16): forty balls 0.6 m north
+        // of a diagonal ray (0.42 m from the line, radius 0.2: all missed), then one ball on the line.
+        var world = TestGeometry.FlatWorld();
+        var ball = new AcDream.Core.Physics.Shapes.PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.2f)] };
+        for (int i = 0; i < 40; i++)
+        {
+            float x = 90.5f + i * 0.5f;
+            world.Objects.Register(0x7000_0200u + (uint)i, ball, TestGeometry.At(x, x + 0.6f, 1.5f), 1f, PhysicsState.Static);
+        }
+        const uint target = 0x7000_0300;
+        world.Objects.Register(target, ball, TestGeometry.At(111f, 111f, 1.5f), 1f, PhysicsState.Static);
+        var q = new WorldQuery(world);
+        Assert.True(q.RayCast(TestGeometry.At(90f, 90f, 1.5f), new Vector3(112f, 112f, 1.5f), out var hit));
+        Assert.Equal(target, hit.ObjectId);
+        // The line meets the ball 0.2 m before its centre: (21·√2 − 0.2) / (22·√2) of the way.
+        Assert.Equal((21f * MathF.Sqrt(2f) - 0.2f) / (22f * MathF.Sqrt(2f)), hit.Fraction, 4);
+    }
 }
