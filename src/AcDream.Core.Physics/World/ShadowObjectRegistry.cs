@@ -397,7 +397,7 @@ public sealed class ShadowObjectRegistry
         public int Count => _slots?.Count ?? 0;
 
         /// <summary>The rows (one per shape) of the cell's <paramref name="index"/>-th object.</summary>
-        public ReadOnlySpan<ShadowEntry> RowsOf(int index) => _slots![index].Record.Rows;
+        public ReadOnlySpan<ShadowEntry> RowsOf(int index) => RowArrayOf(index);
 
         /// <summary>
         /// The array holding the <paramref name="index"/>-th object's rows. The object keeps this array while
