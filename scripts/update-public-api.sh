@@ -5,7 +5,7 @@
 # Run it after an intended change of the public surface (or after a merge), then review the diff.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-for name in AcDream.Core.Physics AcDream.Core.Physics.Scenes; do
+for name in AcDream.Core.Physics AcDream.Core.Physics.Scenes AcDream.Core.Physics.Dat; do
   project="src/$name/$name.csproj"
   unshipped="src/$name/PublicAPI.Unshipped.txt"
   # Start from an empty list so removed or changed symbols do not linger (RS0017 has no automatic fix).
