@@ -99,8 +99,9 @@ public struct Frame
     /// <summary>
     /// Takes a child frame back off (retail Frame::subtract1, CFrame.c at acclient.c:357321, the exact inverse of
     /// <see cref="Combine"/>): the rotation this × child⁻¹ in retail's order, normalized as set_rotate does,
-    /// then the child's origin rotated by that new rotation and taken away. (ACE's AFrame.Subtract rotates the
-    /// child's origin by the child's own rotation instead.)
+    /// then the child's origin rotated by that new rotation and taken away, the rotated x and y rounded to float
+    /// before the origin is added (<see cref="RotationMatrix.SubtractToGlobal"/>). (ACE's AFrame.Subtract rotates
+    /// the child's origin by the child's own rotation instead.)
     /// </summary>
     internal readonly Frame Subtract(in Frame child)
     {
@@ -112,7 +113,7 @@ public struct Frame
         float qw = (float)(y1 * y2 + x2 * x1 + w1 * w2 + z2 * z1);
         var result = new Frame(Origin, Orientation);
         result.SetRotate(qw, qx, qy, qz);
-        result.Origin = result.Matrix.FrameToGlobal(-child.Origin, Origin);
+        result.Origin = result.Matrix.SubtractToGlobal(-child.Origin, Origin);
         return result;
     }
 

@@ -68,6 +68,19 @@ internal readonly struct RotationMatrix
         (float)((double)_m7 * v.Z + (double)_m1 * v.X + (double)_m4 * v.Y + origin.Y),
         (float)((double)_m8 * v.Z + (double)_m2 * v.X + (double)_m5 * v.Y + origin.Z));
 
+    /// <summary>
+    /// The origin of Frame::subtract1 (acclient.c:357321): M·v + origin, summed z, x, y like
+    /// <see cref="FrameToGlobal(Vector3, Vector3)"/>, but retail stores the rotated x and y to float before adding
+    /// the origin's (two roundings each), while the rotated z is added unrounded (one rounding).
+    /// </summary>
+    public Vector3 SubtractToGlobal(Vector3 v, Vector3 origin)
+    {
+        float x = (float)((double)_m6 * v.Z + (double)_m0 * v.X + (double)_m3 * v.Y);
+        float y = (float)((double)_m7 * v.Z + (double)_m1 * v.X + (double)_m4 * v.Y);
+        double z = (double)_m8 * v.Z + (double)_m2 * v.X + (double)_m5 * v.Y;
+        return new((float)((double)x + origin.X), (float)((double)y + origin.Y), (float)(z + origin.Z));
+    }
+
     /// <summary>Frame::globaltolocalvec (acclient.c:143674): Mᵀ·v, summed z, x, y.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public Vector3 FrameToLocal(Vector3 v) => new(

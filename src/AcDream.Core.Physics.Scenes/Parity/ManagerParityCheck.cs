@@ -74,13 +74,13 @@ internal static class ManagerParityCheck
             // target's own quantum, which runs after the mover's (README "Scheduling"): the mover's next UseTime sees it.
             bool atCall = frame.Calls.Length > 0;
             if (atCall && frame.TargetUpdate is { } first && sought != 0)
-                motion.UpdateMoveToTarget(sought, first, file.Mover, state, body);
+                motion.UpdateMoveToTarget(sought, first, frame.InterpolatedUpdate ?? first, file.Mover, state, body);
             bool endedBefore = motion.MoveToStatus == MoveToStatus.Ended;
             var step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
             state = step.Next;
             body = step.Body;
             if (!atCall && frame.TargetUpdate is { } update && sought != 0)
-                motion.UpdateMoveToTarget(sought, update, file.Mover, state, body);
+                motion.UpdateMoveToTarget(sought, update, frame.InterpolatedUpdate ?? update, file.Mover, state, body);
             bool endedNow = !endedBefore && motion.MoveToStatus == MoveToStatus.Ended;
             int e = f + shift;
             if (e >= file.Frames.Length)

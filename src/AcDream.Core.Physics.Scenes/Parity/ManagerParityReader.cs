@@ -13,10 +13,11 @@ namespace AcDream.Core.Physics.Parity;
 /// <summary>A MoveTo call a manager parity file makes before a frame's time passes.</summary>
 internal readonly record struct ManagerCall(MoveToKind Kind, Position Target, MoveToParameters Parameters, uint ObjectId);
 
-/// <summary>One frame of a manager parity file: the calls, the target update delivered, and ACE's state after it.</summary>
+/// <summary>One frame of a manager parity file: the calls, the target update delivered (the target's position and the interpolated one), and ACE's state after it.</summary>
 internal readonly record struct ManagerFrame(
     ManagerCall[] Calls,
     Position? TargetUpdate,
+    Position? InterpolatedUpdate,
     Vector3 Origin,
     uint Cell,
     float Heading,
@@ -120,7 +121,7 @@ internal static class ManagerParityReader
             else if (text.StartsWith("PhysicsObj.", StringComparison.Ordinal))
                 calls.Add(ParseCall(text, at, before));
         }
-        Position? update = null;
+        Position? update = null, interpolated = null;
         if (f.Opt("targetInfo") is { ValueKind: JsonValueKind.Object } ti)
         {
             var t = new JsonObj(ti, f.Child("targetInfo"));
@@ -130,6 +131,8 @@ internal static class ManagerParityReader
                 lastUpdate = time;
                 var p = t.Obj("targetPosition");
                 update = new Position(p.Id("cell"), p.Vec3("origin"));
+                var q = t.Obj("interpolatedPosition");
+                interpolated = new Position(q.Id("cell"), q.Vec3("origin"));
             }
         }
         var i = f.Obj("interpreted");
@@ -146,7 +149,7 @@ internal static class ManagerParityReader
             aux = mv.Id("auxCommand");
             fails = mv.Int("failProgressCount", 0);
         }
-        return new ManagerFrame([.. calls], update, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
+        return new ManagerFrame([.. calls], update, interpolated, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
             f.Bool("onWalkable", false), i.Id("forwardCommand"), i.Float("forwardSpeed"), i.Id("turnCommand"), i.Float("turnSpeed"), kind, command, aux,
             fails, completed);
     }

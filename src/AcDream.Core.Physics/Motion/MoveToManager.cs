@@ -37,6 +37,8 @@ internal sealed class MoveToManager
     {
         public Position Position;
         public bool Contact;
+        /// <summary>CPhysicsObj::IsInterpolating: the position manager has positions queued (a failed check is then not counted).</summary>
+        public bool Interpolating;
         public uint Id;
         public float Radius, Height;
     }
@@ -185,7 +187,7 @@ internal sealed class MoveToManager
     /// HandleUpdateTarget (acclient.c:346050): the sought object's position (<paramref name="present"/> false: it is gone).
     /// Returns false when the update is for another object (ignored, as retail).
     /// </summary>
-    public bool UpdateTarget(ref BodyView body, uint objectId, in Position target, bool present, out bool headingChanged)
+    public bool UpdateTarget(ref BodyView body, uint objectId, in Position target, in Position interpolated, bool present, out bool headingChanged)
     {
         headingChanged = false;
         if (TopLevelObjectId != objectId || !Active)
@@ -197,7 +199,9 @@ internal sealed class MoveToManager
             {
                 if (MovementType == MoveToKind.MoveToObject)
                 {
-                    SoughtPosition = target;
+                    // Retail keeps both (acclient.c:346050): the sought position is the update's interpolated one, the
+                    // position steered at and measured to (GetCurrentDistance, HandleMoveToPosition) the target's own.
+                    SoughtPosition = interpolated;
                     CurrentTargetPosition = target;
                     // Retail restarts both progress samples (float.MaxValue, acclient.c:346050): the next check only
                     // takes a sample, and the average test passes until the next BeginMoveForward.
@@ -215,7 +219,7 @@ internal sealed class MoveToManager
         else if (present)
         {
             if (MovementType == MoveToKind.MoveToObject)
-                MoveToObjectInternal(target);
+                MoveToObjectInternal(target, interpolated);
             else if (MovementType == MoveToKind.TurnToObject)
                 TurnToObjectInternal(target);
         }
@@ -341,12 +345,13 @@ internal sealed class MoveToManager
         _count = 0;
     }
 
-    private void MoveToObjectInternal(in Position target)
+    private void MoveToObjectInternal(in Position target, in Position interpolated)
     {
-        // MoveToObject_Internal (acclient.c:345858): the same nodes as MoveToPosition, towards the object.
-        SoughtPosition = target;
+        // MoveToObject_Internal (acclient.c:345858): the same nodes as MoveToPosition, the first turn towards the
+        // interpolated position (the sought one), the distance to the target's own (current_target_position).
+        SoughtPosition = interpolated;
         CurrentTargetPosition = target;
-        float toTarget = Headings.Towards(_body.Position, target);
+        float toTarget = Headings.Towards(_body.Position, interpolated);
         float distance = CurrentDistance();
         Params.GetCommand(distance, out uint command, out _, out _);
         if (command != 0)
@@ -533,7 +538,8 @@ internal sealed class MoveToManager
         float distance = CurrentDistance();
         if (!CheckProgressMade(distance))
         {
-            if (!MotionsPending())
+            // Counted only while nothing else moves the object (acclient.c:345659: !IsInterpolating && !motions_pending).
+            if (Stalled())
             {
                 if (FailProgressCount++ == 0)
                     FailingSince = Now;
@@ -590,7 +596,8 @@ internal sealed class MoveToManager
         PreviousHeading = heading;
         if (turned >= 180.0 || turned <= PhysicsConstants.Epsilon)
         {
-            if (!MotionsPending())
+            // HandleTurnToHeading (acclient.c:345711): the same condition as the move's.
+            if (Stalled())
                 FailProgressCount++;
         }
         else
@@ -682,6 +689,9 @@ internal sealed class MoveToManager
         _table.CheckForCompletedMotions();
     }
 
-    // CPhysicsObj::motions_pending (the interpreter's queue); IsInterpolating is false (no interpolation here).
+    // CPhysicsObj::motions_pending (the interpreter's queue).
     private bool MotionsPending() => _interp.PendingCount > 0;
+
+    // A failed progress check counts only when neither the interpolation nor pending motions move the object.
+    private bool Stalled() => !_body.Interpolating && !MotionsPending();
 }

@@ -8,6 +8,9 @@ namespace AcDream.Core.Physics.Motion;
 public sealed partial class ObjectMotion
 {
     private MoveToManager? _moveTo;
+
+    /// <summary>The manager itself (null before the first MoveTo), for tests that read retail's fields.</summary>
+    internal MoveToManager? MoveToManagerState => _moveTo;
     private bool _landed;
     private float _radius, _height;
 
@@ -92,7 +95,7 @@ public sealed partial class ObjectMotion
     /// <summary>
     /// MoveToManager::MoveToObject: move to the object <paramref name="objectId"/> (a cylinder of
     /// <paramref name="radius"/> and <paramref name="height"/>), whose positions arrive through
-    /// <see cref="UpdateMoveToTarget"/> (retail's TargetManager voyeur updates); nothing moves before the first.
+    /// <see cref="UpdateMoveToTarget(uint, in Position, MoverDescription, in MoverState, in BodyState)"/> (retail's TargetManager voyeur updates); nothing moves before the first.
     /// The object itself as target ends the move at once with <see cref="MoveToError.None"/> (retail cleans up).
     /// </summary>
     /// <exception cref="ArgumentException">A negative or non-finite radius or height, or parameters out of range, named.</exception>
@@ -125,7 +128,7 @@ public sealed partial class ObjectMotion
 
     /// <summary>
     /// MoveToManager::TurnToObject: turn to face <paramref name="objectId"/> once its position arrives through
-    /// <see cref="UpdateMoveToTarget"/>. Retail quirk kept: the turn faces the object exactly; the parameters'
+    /// <see cref="UpdateMoveToTarget(uint, in Position, MoverDescription, in MoverState, in BodyState)"/>. Retail quirk kept: the turn faces the object exactly; the parameters'
     /// desired heading is stored where TurnToObject_Internal does not read it.
     /// </summary>
     /// <exception cref="ArgumentException">Parameters out of range, named.</exception>
@@ -142,18 +145,31 @@ public sealed partial class ObjectMotion
     /// <summary>
     /// MoveToManager::HandleUpdateTarget: the sought object's newest position. The first starts the move; later ones
     /// re-aim it and restart the progress samples (as retail). Each update replaces the last (no queue: a flood costs
-    /// nothing more); the order is the caller's, as retail's TargetManager delivers them.
+    /// nothing more); the order is the caller's, as retail's TargetManager delivers them. One position serves as both of
+    /// retail's (the target's own and the interpolated one; see the overload that takes both).
     /// </summary>
     /// <returns>False when no move is waiting on <paramref name="objectId"/> (ignored, as retail).</returns>
     /// <exception cref="ArgumentException">A position outside the world or not finite, named; nothing is changed.</exception>
-    public bool UpdateMoveToTarget(uint objectId, in Position position, MoverDescription mover, in MoverState state, in BodyState body)
+    public bool UpdateMoveToTarget(uint objectId, in Position position, MoverDescription mover, in MoverState state, in BodyState body) =>
+        UpdateMoveToTarget(objectId, position, position, mover, state, body);
+
+    /// <summary>
+    /// MoveToManager::HandleUpdateTarget with both positions of retail's TargetInfo: <paramref name="position"/> (the
+    /// target's own, which the move steers at and measures its distance to) and <paramref name="interpolatedPosition"/>
+    /// (where the target manager expects it a quantum later: the move's sought position, towards which the first
+    /// update's turn is aimed).
+    /// </summary>
+    /// <returns>False when no move is waiting on <paramref name="objectId"/> (ignored, as retail).</returns>
+    /// <exception cref="ArgumentException">A position outside the world or not finite, named; nothing is changed.</exception>
+    public bool UpdateMoveToTarget(uint objectId, in Position position, in Position interpolatedPosition, MoverDescription mover, in MoverState state, in BodyState body)
     {
         ArgumentNullException.ThrowIfNull(mover);
         CheckTarget(position, nameof(position));
+        CheckTarget(interpolatedPosition, nameof(interpolatedPosition));
         if (_moveTo is null)
             return false;
         var view = Prepare(mover, state, body);
-        bool waiting = _moveTo.UpdateTarget(ref view, objectId, position, present: true, out _);
+        bool waiting = _moveTo.UpdateTarget(ref view, objectId, position, interpolatedPosition, present: true, out _);
         HandOffStick();
         return waiting;
     }
@@ -169,7 +185,7 @@ public sealed partial class ObjectMotion
         if (_moveTo is null)
             return false;
         var view = Prepare(mover, state, body);
-        return _moveTo.UpdateTarget(ref view, objectId, default, present: false, out _);
+        return _moveTo.UpdateTarget(ref view, objectId, default, default, present: false, out _);
     }
 
     /// <summary>MoveToManager::CancelMoveTo: ends a move in progress with <see cref="MoveToError.ActionCancelled"/> and stops the object; nothing when none.</summary>
@@ -193,6 +209,7 @@ public sealed partial class ObjectMotion
     {
         Position = state.Position,
         Contact = state.Contact,
+        Interpolating = PositionManager.IsInterpolating,
         Id = mover.ObjectId,
         Radius = _radius,
         Height = _height,

@@ -184,6 +184,92 @@ public class MoveToTests
     }
 
     [Fact]
+    public void AnObjectUpdate_KeepsTwoPositions_TheTurnAimsAtTheInterpolatedOne_TheDistanceIsToTheTarget()
+    {
+        // MoveToObject_Internal (acclient.c:345858) and HandleUpdateTarget (346050): sought_position is the update's
+        // interpolated position, current_target_position the target's own. The first turn is aimed at the interpolated
+        // (64, 72): from (60, 60) that is compass atan2(4, 12) = 18.435°; the move's distance is GetCurrentDistance to the
+        // target (60, 72): a cylinder gap of 12 − 0.48 − 0.48 = 11.04 m (to the interpolated one it would be 11.689 m).
+        var rig = Rig();
+        var target = TestGeometry.At(60f, 72f, 0f);
+        var interpolated = TestGeometry.At(64f, 72f, 0f);
+        rig.Motion.MoveToObject(0x50000002, 0.48f, 1.835f, MoveToParameters.Default, rig.Mover, rig.State, rig.Body);
+        Assert.True(rig.Motion.UpdateMoveToTarget(0x50000002, target, interpolated, rig.Mover, rig.State, rig.Body));
+        var m = rig.Motion.MoveToManagerState!;
+        Assert.Equal(interpolated.Frame.Origin, m.SoughtPosition.Frame.Origin);
+        Assert.Equal(target.Frame.Origin, m.CurrentTargetPosition.Frame.Origin);
+        for (int f = 0; f < 60 && m.CurrentCommand != MotionCommand.WalkForward; f++)
+            rig.Frames(1);
+        Assert.Equal(MotionCommand.WalkForward, m.CurrentCommand); // the turn ended, the walk began (BeginMoveForward)
+        Assert.Equal(18.435, Headings.Of(rig.State.Position.Frame), 2);
+        Assert.Equal(11.04f, m.OriginalDistance, 3);
+    }
+
+    [Fact]
+    public void AFailedProgressCheck_IsNotCountedWhileInterpolating()
+    {
+        // HandleMoveToPosition (acclient.c:345659): ++fail_progress_count only when !IsInterpolating && !motions_pending.
+        // The blocked run of the count-only test; at frame 150 a position behind the slab is queued for interpolation:
+        // while the queue holds it (its node fails its own checks until the interpolation blips, CInterpolationManager)
+        // the move's failing checks add nothing; before, one a quantum.
+        var rig = Rig(Bench.DoorScene.Create().World, 100f, 88f);
+        rig.Motion.MoveToPosition(TestGeometry.At(100f, 104f, 0f), MoveToParameters.Default with { WalkRunThreshold = 1f }, rig.Mover, rig.State, rig.Body);
+        rig.Frames(150);
+        int before = rig.Motion.MoveToFailProgressCount;
+        Assert.True(before > 0, "the blocked move fails its checks before the interpolation");
+        rig.Motion.PositionManager.InterpolateTo(TestGeometry.At(100f, 101.5f, 0f), keepHeading: true, rig.Mover, ref rig.State);
+        int interpolatingFrames = 0;
+        while (rig.Motion.PositionManager.IsInterpolating && interpolatingFrames < 100)
+        {
+            int count = rig.Motion.MoveToFailProgressCount;
+            rig.Frames(1);
+            if (rig.Motion.PositionManager.IsInterpolating)
+                Assert.Equal(count, rig.Motion.MoveToFailProgressCount);
+            interpolatingFrames++;
+        }
+        Assert.True(interpolatingFrames >= 5, $"interpolated for {interpolatingFrames} frames");
+        // The last quantum counts once: its failed node leaves the queue in adjust_offset (NodeCompleted, before
+        // MoveToManager::UseTime), and UseTime's blip follows (acclient.c:388881, 389277). Without the rule: one a quantum.
+        Assert.Equal(before + 1, rig.Motion.MoveToFailProgressCount);
+    }
+
+    [Theory]
+    // A MoveToObject re-aimed by target updates (HandleUpdateTarget, acclient.c:346050, sets previous_distance_time and
+    // original_distance_time to now): CheckProgressMade (344832) judges only after more than 1 s since the last sample,
+    // so updates every 0.5 s never let it judge: a mover blocked by the slab never counts a failure. With updates every
+    // 2 s the checks run between them and fail.
+    [InlineData(15, false)]
+    [InlineData(60, true)]
+    public void UpdatesMoreOftenThanOnceASecond_NeverLetTheProgressCheckJudge(int framesBetweenUpdates, bool expectFailures)
+    {
+        var rig = Rig(Bench.DoorScene.Create().World, 100f, 88f);
+        var behindTheSlab = TestGeometry.At(100f, 104f, 0f);
+        rig.Motion.MoveToObject(0x50000002, 0.48f, 1.835f, MoveToParameters.Default with { WalkRunThreshold = 1f }, rig.Mover, rig.State, rig.Body);
+        int most = 0, judged = 0;
+        for (int f = 0; f < 300; f++)
+        {
+            if (f % framesBetweenUpdates == 0)
+                rig.Motion.UpdateMoveToTarget(0x50000002, behindTheSlab, rig.Mover, rig.State, rig.Body);
+            rig.Frames(1);
+            most = Math.Max(most, rig.Motion.MoveToFailProgressCount);
+            // A judgement takes a new sample (previous_distance = the distance); an update leaves float.MaxValue there.
+            if (f > framesBetweenUpdates && rig.Motion.MoveToManagerState!.PreviousDistance != float.MaxValue)
+                judged++;
+        }
+        Assert.True(rig.Origin.Y < 99.6f, $"blocked by the slab, at {rig.Origin}");
+        Assert.Equal(MoveToStatus.Moving, rig.Motion.MoveToStatus);
+        if (expectFailures)
+        {
+            Assert.True(most > 0, "updates every 2 s: the checks between them fail");
+        }
+        else
+        {
+            Assert.Equal(0, most);
+            Assert.Equal(0, judged); // never judged at all, not judged and passed
+        }
+    }
+
+    [Fact]
     public void BadTargets_AreRefusedByName_AndChangeNothing()
     {
         var rig = Rig();
