@@ -1,0 +1,48 @@
+using System;
+using AcDream.Core.Physics.World;
+using DatReaderWriter.DBObjs;
+using DatLandDefs = DatReaderWriter.Types.LandDefs;
+
+namespace AcDream.Core.Physics.Dat;
+
+/// <summary>A LandBlock (cell DAT 0xXXYYFFFF, retail CLandBlockStruct) to the runtime's <see cref="Terrain"/>.</summary>
+public static class DatTerrain
+{
+    /// <summary>
+    /// The landblock's terrain: each of the 81 vertex heights (<c>Height[i]</c>, an index into the Region's
+    /// <c>LandDefs.LandHeightTable</c> of 256 metres, retail <c>LandDefs::land_height_table</c>) at the same index,
+    /// <c>i = x * 9 + y</c> (x east, y north). The cut of each land cell is computed by the runtime from the
+    /// cell's global coordinates, as retail does. The per-vertex terrain words (<c>Terrain[i]</c>: road, terrain
+    /// type, scenery) are not read here: the runtime's terrain carries heights only.
+    /// </summary>
+    /// <param name="block">The LandBlock as read (id 0xXXYYFFFF).</param>
+    /// <param name="landDefs">The Region's (portal DAT 0x13000000) <c>LandDefs</c>.</param>
+    /// <exception cref="DatObjectException">The id is not a LandBlock id, a list does not have its size, or the runtime refuses the terrain (a landblock outside the world, a height not finite); the message names the LandBlock id.</exception>
+    public static Terrain ToTerrain(LandBlock block, DatLandDefs landDefs)
+    {
+        ArgumentNullException.ThrowIfNull(block);
+        ArgumentNullException.ThrowIfNull(landDefs);
+        uint id = block.Id;
+        if ((id & 0xFFFF) != 0xFFFF)
+            throw new DatObjectException(id, "id: a LandBlock's id is 0xXXYYFFFF.");
+        const int count = Terrain.VerticesPerSide * Terrain.VerticesPerSide;
+        if (block.Height is not { Length: count })
+            throw new DatObjectException(id, $"height: expected {count} vertex heights (9×9), got {block.Height?.Length ?? 0}.");
+        var table = landDefs.LandHeightTable;
+        if (table is not { Length: 256 })
+            throw new DatObjectException(0x1300_0000, $"landDefs.landHeightTable: expected 256 heights, got {table?.Length ?? 0}.");
+        Span<float> heights = stackalloc float[count];
+        for (int i = 0; i < count; i++)
+            heights[i] = table[block.Height[i]];
+        // Terrain types (block.Terrain[i]) are where water comes from: they join here when the runtime's
+        // terrain takes them.
+        try
+        {
+            return new Terrain(id >> 16, heights, $"LandBlock 0x{id:X8}");
+        }
+        catch (ArgumentException ex)
+        {
+            throw new DatObjectException(id, ex.Message, ex);
+        }
+    }
+}
