@@ -12,8 +12,8 @@ namespace AcDream.Core.Physics.Dat;
 
 /// <summary>
 /// A <see cref="PhysicsWorld"/> filled from the retail DAT files, landblock by landblock: the terrain (LandBlock
-/// 0xXXYYFFFF through the Region's height table), the env cells (0xXXYY0100 and up, as many as the LandBlockInfo
-/// counts) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
+/// 0xXXYYFFFF through the Region's height table), the env cells (the first ones from 0xXXYY0100 up, as many as the
+/// LandBlockInfo counts) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
 /// the env cells'). A landblock is loaded whole or not at all: anything missing or refused throws (a
 /// <see cref="DatReadException"/> or <see cref="DatObjectException"/> naming the DAT file and object id) and the
 /// world is left as it was. Models, setups, cell structures and the height table are converted once and kept in
@@ -95,10 +95,16 @@ public sealed class DatWorld
             throw new DatObjectException(info.Id, $"numCells: {info.NumCells} cells do not fit a landblock (at most {0xFFFE - 0x0100}).");
         var datCells = new DatEnvCell[cellCount];
         var envCells = new EnvCell[cellCount];
+        // Retail numbers a landblock's cells 0x0100 to 0x0100 + num_cells - 1 (CLandBlockInfo's num_cells); a DAT
+        // holding only some of a landblock's cells under their own ids (a fixture) is read by skipping the gaps.
+        uint next = 0x0100;
         for (int i = 0; i < cellCount; i++)
         {
-            // Retail numbers a landblock's cells from 0x0100 without gaps (CLandBlock's num_cells).
-            var datCell = datCells[i] = Files.ReadCell<DatEnvCell>(prefix | (uint)(0x0100 + i));
+            while (next < 0xFFFE && !Files.CellContains(prefix | next))
+                next++;
+            if (next >= 0xFFFE)
+                throw new DatObjectException(info!.Id, $"numCells: {info.NumCells} cells, but {Files.CellName} holds only {i} from 0x{prefix | 0x0100:X8} up.");
+            var datCell = datCells[i] = Files.ReadCell<DatEnvCell>(prefix | next++);
             envCells[i] = DatCells.ToEnvCell(datCell, CellStructure(DatCells.EnvironmentIdOf(datCell), datCell.CellStructure));
         }
 

@@ -50,8 +50,8 @@ public class DatWorldTests
         using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040), WorldWriter.Info(0x8040, 2)]);
         using var files = dats.Open();
         var world = new DatWorld(files);
-        var ex = Assert.Throws<DatReadException>(() => world.LoadLandblock(0x8040));
-        Assert.Equal("client_cell_1.dat 0x80400100: is absent (expected a EnvCell).", ex.Message);
+        var ex = Assert.Throws<DatObjectException>(() => world.LoadLandblock(0x8040));
+        Assert.Equal("client_cell_1.dat: LandBlockInfo 0x8040FFFE: numCells: 2 cells, but client_cell_1.dat holds only 0 from 0x80400100 up.", ex.Message);
         Assert.False(world.World.Cells.HasLandblock(0x8040));
     }
 

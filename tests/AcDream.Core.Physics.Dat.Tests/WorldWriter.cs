@@ -16,12 +16,16 @@ internal static class WorldWriter
     /// <summary>The height table: entry i is i / 4 metres.</summary>
     public static float TableHeight(int index) => index / 4f;
 
+    /// <summary>The Region object holding the given land definitions (the rest of a region is not read by physics).</summary>
+    public static Region Region(DatReaderWriter.Types.LandDefs defs) =>
+        new() { Id = DatWorld.RegionId, LandDefs = defs, GameTime = new GameTime(), TerrainInfo = new TerrainDesc { LandSurfaces = new LandSurf { TexMerge = new TexMerge() } } };
+
     public static Region Region()
     {
         var defs = new DatReaderWriter.Types.LandDefs { NumBlockLength = 255, NumBlockWidth = 255, SquareLength = 24, LBlockLength = 8, VertexPerCell = 1, LandHeightTable = new float[256] };
         for (int i = 0; i < 256; i++)
             defs.LandHeightTable[i] = TableHeight(i);
-        return new Region { Id = DatWorld.RegionId, LandDefs = defs, GameTime = new GameTime(), TerrainInfo = new TerrainDesc { LandSurfaces = new LandSurf { TexMerge = new TexMerge() } } };
+        return Region(defs);
     }
 
     /// <summary>A landblock of rolling land: the height index of a vertex is a triangle wave of its global grid coordinates, so neighbouring landblocks meet.</summary>

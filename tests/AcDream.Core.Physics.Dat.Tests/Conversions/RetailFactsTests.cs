@@ -40,7 +40,7 @@ public class RetailFactsTests
         setup.PlacementFrames.Add(Placement.Default, placement);
         // The part's geometry is not stated; a small box stands in for it.
         var part = DatObjects.GfxObj(0x010008AB, BspShapes.Box(new Vector3(-0.3f), new Vector3(0.3f)));
-        using var files = DatFiles.Write([setup, part], []);
+        using var files = WrittenDatFiles.Write([setup, part], []);
 
         var read = files.Get<Setup>(files.Portal, 0x02000108);
         var result = DatSetups.ToPhysicsSetup(read, id => DatModels.ToPhysicsModel(files.Get<GfxObj>(files.Portal, id)));
@@ -93,7 +93,7 @@ public class RetailFactsTests
         structure.Polygons.Add(13, DatObjects.Polygon(room.PolygonArray[1], vertices));
         var environment = new DatEnvironment { Id = 0x0D0003B2 };
         environment.Cells.Add(13, structure);
-        using var files = DatFiles.Write([environment], [cell]);
+        using var files = WrittenDatFiles.Write([environment], [cell]);
 
         var readCell = files.Get<DatEnvCell>(files.Cell, 0x7D64010D);
         var readEnvironment = files.Get<DatEnvironment>(files.Portal, DatCells.EnvironmentIdOf(readCell));
@@ -138,7 +138,7 @@ public class RetailFactsTests
     public void APartsDefaultScale_IsItsZ()
     {
         var setup = new Setup { Id = 0x02000002, Flags = SetupFlags.HasDefaultScale, Parts = [0x01000001], DefaultScale = [new Vector3(3, 4, 0.5f)], SortingSphere = new DatSphere(), SelectionSphere = new DatSphere() };
-        using var files = DatFiles.Write([setup], []);
+        using var files = WrittenDatFiles.Write([setup], []);
 
         var result = DatSetups.ToPhysicsSetup(files.Get<Setup>(files.Portal, 0x02000002), _ => null);
 
@@ -159,7 +159,7 @@ public class RetailFactsTests
         var table = new float[256];
         for (int i = 0; i < 256; i++)
             table[i] = i * 2f;
-        using var files = DatFiles.Write([], [block]);
+        using var files = WrittenDatFiles.Write([], [block]);
 
         var terrain = DatTerrain.ToTerrain(files.Get<LandBlock>(files.Cell, 0xA9B4FFFF), new DatReaderWriter.Types.LandDefs { LandHeightTable = table });
 
