@@ -41,6 +41,9 @@ public static class Program
                                         draw the scene (top and side views) with each
                                         mover's path coloured by outcome, numbered, and
                                         named in a legend (also printed)
+          dat DIR [LANDBLOCK]           summarise the DAT files in DIR (client_portal.dat and
+                                        client_cell_1.dat), or one landblock's physics content:
+                                        cells, portals, buildings, objects, polygons, BSP depth
           parity DIR                    check the engine against every parity file (*.json.gz) in
                                         DIR: one line per file; exit 1 when a file misses its
                                         threshold
@@ -49,6 +52,9 @@ public static class Program
         SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
         Query coordinates are landblock-local to the scene's first landblock.
         --diag prints each frame's structured diagnostics events.
+        --dat DIR (run, record, replay, query, plot): the scene's movers walk through a world loaded
+        from the DAT files in DIR (the 3 x 3 landblocks around each mover's start) instead of the
+        scene's own world.
         Exit codes: 0 success, 1 replay or parity mismatch, 2 usage error or bad file.
         """;
 
@@ -63,6 +69,7 @@ public static class Program
         public string? Out;
         public bool Diag;
         public float Tolerance = TrajectoryReplay.DefaultTolerance;
+        public string? Dat;
     }
 
     /// <summary>Runs a command, writing to the given streams; returns the exit code.</summary>
@@ -112,13 +119,17 @@ public static class Program
                 case "query":
                     if (options.Positional.Count < 2)
                         throw new UsageException("query needs SCENE and floor, cell, near or cast");
-                    return QueryCommand.Run(LoadScene(options.Positional[0]), options.Positional.ToArray().AsSpan(1), stdout);
+                    return QueryCommand.Run(LoadScene(options, options.Positional[0]), options.Positional.ToArray().AsSpan(1), stdout);
                 case "plot":
                     if (options.Positional.Count is < 1 or > 2)
                         throw new UsageException(options.Positional.Count < 1 ? "plot needs SCENE" : $"unexpected argument '{options.Positional[2]}'");
                     if (options.Out is null)
                         throw new UsageException("plot needs --out FILE.png");
-                    return PlotCommand.Run(LoadScene(options.Positional[0]), options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null, options.Out, stdout);
+                    return PlotCommand.Run(LoadScene(options, options.Positional[0]), options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null, options.Out, stdout);
+                case "dat":
+                    if (options.Positional.Count is < 1 or > 2)
+                        throw new UsageException(options.Positional.Count < 1 ? "dat needs DIR" : $"unexpected argument '{options.Positional[2]}'");
+                    return DatCommand.Run(options.Positional[0], options.Positional.Count > 1 ? options.Positional[1] : null, stdout);
                 case "parity":
                     Expect(options, 1, "parity needs DIR");
                     return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
@@ -136,6 +147,11 @@ public static class Program
         }
         catch (IOException ex)
         {
+            return Fail(stderr, ex.Message, usage: false);
+        }
+        catch (InvalidDataException ex)
+        {
+            // A DAT object the adapter refuses (DatObjectException): the message names the file and object id.
             return Fail(stderr, ex.Message, usage: false);
         }
         catch (UnauthorizedAccessException ex)
@@ -194,6 +210,10 @@ public static class Program
                 case "--diag":
                     o.Diag = true;
                     break;
+                case "--dat":
+                    if (i + 1 >= args.Length) throw new UsageException("--dat needs a folder holding the DAT files");
+                    o.Dat = args[++i];
+                    break;
                 case "--tolerance":
                     if (i + 1 >= args.Length || !float.TryParse(args[++i], NumberStyles.Float, CultureInfo.InvariantCulture, out o.Tolerance)
                         || !(o.Tolerance >= 0) || !float.IsFinite(o.Tolerance))
@@ -213,6 +233,13 @@ public static class Program
     {
         if (o.Positional.Count != count)
             throw new UsageException(o.Positional.Count < count ? message : $"unexpected argument '{o.Positional[count]}'");
+    }
+
+    /// <summary>Loads SCENE, in the world of the DAT files when --dat names them.</summary>
+    private static Scene LoadScene(Options o, string arg)
+    {
+        var scene = LoadScene(arg);
+        return o.Dat is null ? scene : DatCommand.WithDatWorld(scene, o.Dat);
     }
 
     /// <summary>Loads SCENE: an existing file, else a built-in name.</summary>
@@ -249,7 +276,7 @@ public static class Program
 
     private static int RunScene(Options o, TextWriter stdout, bool table)
     {
-        var scene = LoadScene(o.Positional[0]);
+        var scene = LoadScene(o, o.Positional[0]);
         Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;
         var trajectory = NamingScene(o.Positional[0], () => SceneRunner.Run(scene, diag));
         if (table)
@@ -262,7 +289,7 @@ public static class Program
 
     private static int Replay(Options o, TextWriter stdout)
     {
-        var scene = LoadScene(o.Positional[0]);
+        var scene = LoadScene(o, o.Positional[0]);
         string path = o.Positional[1];
         var trajectory = LoadTrajectory(path);
         Action<FrameDiagnostics>? diag = o.Diag ? d => PrintDiagnostics(stdout, d) : null;

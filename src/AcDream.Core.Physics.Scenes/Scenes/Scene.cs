@@ -29,6 +29,14 @@ public sealed class Scene
     public PhysicsWorld World { get; }
     /// <summary>The movers, in file order.</summary>
     public IReadOnlyList<SceneMover> Movers { get; }
+
+    /// <summary>The same movers in another world (for example one loaded from the DAT files): the scene's own world is not used.</summary>
+    /// <param name="world">The world the movers walk through; their start cells must be in it when the scene runs.</param>
+    public Scene WithWorld(PhysicsWorld world)
+    {
+        ArgumentNullException.ThrowIfNull(world);
+        return new Scene(Name, Description, Sha256, world, Movers);
+    }
 }
 
 /// <summary>

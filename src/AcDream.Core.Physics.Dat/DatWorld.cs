@@ -1,0 +1,268 @@
+using System;
+using System.Collections.Generic;
+using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.World;
+using DatReaderWriter.DBObjs;
+using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
+using DatEnvironment = DatReaderWriter.DBObjs.Environment;
+using DatLandDefs = DatReaderWriter.Types.LandDefs;
+using EnvCell = AcDream.Core.Physics.World.EnvCell;
+
+namespace AcDream.Core.Physics.Dat;
+
+/// <summary>
+/// A <see cref="PhysicsWorld"/> filled from the retail DAT files, landblock by landblock: the terrain (LandBlock
+/// 0xXXYYFFFF through the Region's height table), the env cells (the first ones from 0xXXYY0100 up, as many as the
+/// LandBlockInfo counts) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
+/// the env cells'). A landblock is loaded whole or not at all: anything missing or refused throws (a
+/// <see cref="DatReadException"/> or <see cref="DatObjectException"/> naming the DAT file and object id) and the
+/// world is left as it was. Models, setups, cell structures and the height table are converted once and kept in
+/// <see cref="DatFiles.Converted"/>, shared with every other world made from the same files.
+/// </summary>
+/// <remarks>
+/// Threads: <see cref="Read"/> (the DAT reads and conversions, nearly all of a load's time) may run on any thread
+/// while engines and queries use the world; <see cref="Add"/>, <see cref="LoadLandblock"/>,
+/// <see cref="UnloadLandblock"/> and <see cref="StreamAround"/> change the world and follow its single-writer rule
+/// (no engine or query meanwhile), as <see cref="PhysicsWorld.LoadLandblock"/> does.
+/// </remarks>
+public sealed class DatWorld
+{
+    /// <summary>The Region object of the portal DAT (its LandDefs hold the height table).</summary>
+    public const uint RegionId = 0x1300_0000;
+
+    /// <summary>The most static objects a landblock may place in all (its LandBlockInfo's and its env cells'): the ids of <see cref="DefaultDescription"/> number them in 12 bits.</summary>
+    public const int MaxStaticObjects = 4096;
+
+    private readonly DatObjectDescriber _describe;
+    private readonly Dictionary<uint, DatLandblock> _loaded = new();
+
+    /// <summary>Makes a world over the files (an empty <see cref="PhysicsWorld"/> unless one is given).</summary>
+    /// <param name="files">The open DAT files; several worlds may share them.</param>
+    /// <param name="world">The world to fill (it may hold landblocks and objects of the host's too).</param>
+    /// <param name="describe">The game's description of each static object; <see cref="DefaultDescription"/> when null.</param>
+    public DatWorld(DatFiles files, PhysicsWorld? world = null, DatObjectDescriber? describe = null)
+    {
+        Files = files ?? throw new ArgumentNullException(nameof(files));
+        World = world ?? new PhysicsWorld();
+        _describe = describe ?? DefaultDescription;
+    }
+
+    /// <summary>The DAT files read.</summary>
+    public DatFiles Files { get; }
+    /// <summary>The world filled.</summary>
+    public PhysicsWorld World { get; }
+    /// <summary>The landblocks loaded through this instance.</summary>
+    public IReadOnlyCollection<uint> Loaded => _loaded.Keys;
+
+    /// <summary>The landblock loaded through this instance, or null.</summary>
+    public DatLandblock? LoadedLandblock(uint landblock) => _loaded.GetValueOrDefault(landblock);
+
+    /// <summary>
+    /// The default description of a DAT static object: id <c>0x7000_0000 | landblock &lt;&lt; 12 | index</c> (unique per
+    /// landblock and index, outside the ranges the game gives its dynamic objects), scale 1, state
+    /// <see cref="PhysicsState.Static"/>, no flags.
+    /// </summary>
+    public static DatObjectDescription DefaultDescription(uint landblock, int index, uint owner, int ownerIndex, DatPlacement placement) =>
+        new(0x7000_0000u | (landblock & 0xFFFF) << 12 | (uint)index, 1f, PhysicsState.Static, ShadowFlags.None);
+
+    /// <summary>Reads and converts a landblock without touching the world; any thread.</summary>
+    /// <param name="landblock">The landblock id (0xXXYY).</param>
+    /// <exception cref="DatReadException">A file or an object is absent, of another type or unreadable; the message names the file and id.</exception>
+    /// <exception cref="DatObjectException">An object is refused (a polygon, a tree, a count, a frame); the message names the file and id.</exception>
+    public DatLandblock Read(uint landblock)
+    {
+        if (landblock > 0xFFFF)
+            throw new ArgumentOutOfRangeException(nameof(landblock), $"landblock 0x{landblock:X}: a landblock id is 16 bits (0xXXYY).");
+        try
+        {
+            return ReadUnchecked(landblock);
+        }
+        catch (DatObjectException ex) when (ex.File is null)
+        {
+            throw ex.InFile(IsPortalId(ex.ObjectId) ? Files.PortalName : Files.CellName);
+        }
+    }
+
+    private DatLandblock ReadUnchecked(uint landblock)
+    {
+        uint prefix = landblock << 16;
+        var land = Files.ReadCell<LandBlock>(prefix | 0xFFFF);
+        var terrain = DatTerrain.ToTerrain(land, LandDefs());
+        LandBlockInfo? info = Files.CellContains(prefix | 0xFFFE) ? Files.ReadCell<LandBlockInfo>(prefix | 0xFFFE) : null;
+
+        int cellCount = (int)Math.Min(info?.NumCells ?? 0, 0xFFFE - 0x0100u);
+        if (info is not null && info.NumCells != cellCount)
+            throw new DatObjectException(info.Id, $"numCells: {info.NumCells} cells do not fit a landblock (at most {0xFFFE - 0x0100}).");
+        var datCells = new DatEnvCell[cellCount];
+        var envCells = new EnvCell[cellCount];
+        // Retail numbers a landblock's cells 0x0100 to 0x0100 + num_cells - 1 (CLandBlockInfo's num_cells); a DAT
+        // holding only some of a landblock's cells under their own ids (a fixture) is read by skipping the gaps.
+        uint next = 0x0100;
+        for (int i = 0; i < cellCount; i++)
+        {
+            while (next < 0xFFFE && !Files.CellContains(prefix | next))
+                next++;
+            if (next >= 0xFFFE)
+                throw new DatObjectException(info!.Id, $"numCells: {info.NumCells} cells, but {Files.CellName} holds only {i} from 0x{prefix | 0x0100:X8} up.");
+            var datCell = datCells[i] = Files.ReadCell<DatEnvCell>(prefix | next++);
+            envCells[i] = DatCells.ToEnvCell(datCell, CellStructure(DatCells.EnvironmentIdOf(datCell), datCell.CellStructure));
+        }
+
+        int buildingCount = info?.Buildings?.Count ?? 0;
+        var buildings = new Building[buildingCount];
+        for (int i = 0; i < buildingCount; i++)
+        {
+            uint modelId = info!.Buildings[i].ModelId;
+            var shell = Model(modelId) ?? throw new DatObjectException(info.Id, $"buildings[{i}].modelId: GfxObj 0x{modelId:X8} has no physics, so no shell.");
+            buildings[i] = DatLandblocks.ToBuilding(info, i, shell);
+        }
+
+        var placements = new List<(uint Owner, int Index, DatPlacement Placement)>();
+        if (info is not null)
+            Collect(placements, info.Id, DatLandblocks.Objects(info));
+        foreach (var datCell in datCells)
+            Collect(placements, datCell.Id, DatCells.StaticObjects(datCell));
+        if (placements.Count > MaxStaticObjects)
+            throw new DatObjectException(prefix | 0xFFFE, $"objects: a landblock places at most {MaxStaticObjects} static objects (with its cells'), got {placements.Count}.");
+        var objects = new DatStaticObject[placements.Count];
+        var ids = new HashSet<uint>();
+        for (int i = 0; i < objects.Length; i++)
+        {
+            var (owner, ownerIndex, p) = placements[i];
+            var description = _describe(landblock, i, owner, ownerIndex, p);
+            if (!ids.Add(description.Id))
+                throw new DatObjectException(prefix | 0xFFFE, $"objects[{i}]: the describer gave id 0x{description.Id:X8} twice.");
+            objects[i] = new DatStaticObject(description, p.ModelId, Setup(p.ModelId), p.Position);
+        }
+        return new DatLandblock(landblock, terrain, envCells, buildings, objects);
+    }
+
+    private static void Collect(List<(uint, int, DatPlacement)> into, uint owner, IReadOnlyList<DatPlacement> placements)
+    {
+        for (int i = 0; i < placements.Count; i++)
+            into.Add((owner, i, placements[i]));
+    }
+
+    /// <summary>
+    /// Adds a landblock read by <see cref="Read"/>: its cells and buildings (<see cref="PhysicsWorld.LoadLandblock"/>),
+    /// then its objects, skipping those still registered (an object that kept rows in a loaded neighbour). All or
+    /// nothing: if anything is refused, what was added is taken out again and the exception is rethrown.
+    /// </summary>
+    /// <exception cref="ArgumentException">The landblock is already loaded, or the world refuses a cell, portal, building or object; the message names it.</exception>
+    public void Add(DatLandblock block)
+    {
+        ArgumentNullException.ThrowIfNull(block);
+        World.LoadLandblock(block.Terrain, block.EnvCells, block.Buildings);
+        var registered = new List<uint>(block.Objects.Count);
+        try
+        {
+            foreach (var o in block.Objects)
+            {
+                var d = o.Description;
+                if (World.Objects.Contains(d.Id))
+                    continue;
+                World.Objects.Register(d.Id, o.Setup, o.Position, d.Scale, d.State, d.Flags);
+                registered.Add(d.Id);
+            }
+        }
+        catch
+        {
+            foreach (uint id in registered)
+                World.Objects.Unregister(id);
+            World.UnloadLandblock(block.Landblock);
+            throw;
+        }
+        _loaded[block.Landblock] = block;
+    }
+
+    /// <summary>Reads and adds a landblock (<see cref="Read"/> then <see cref="Add"/>).</summary>
+    /// <exception cref="DatReadException">See <see cref="Read"/>.</exception>
+    /// <exception cref="DatObjectException">See <see cref="Read"/>.</exception>
+    /// <exception cref="ArgumentException">See <see cref="Add"/>.</exception>
+    public DatLandblock LoadLandblock(uint landblock)
+    {
+        var block = Read(landblock);
+        Add(block);
+        return block;
+    }
+
+    /// <summary>
+    /// Removes a landblock loaded through this instance, as <see cref="PhysicsWorld.UnloadLandblock"/> does: its
+    /// cells and buildings and its objects' rows there (an object still listed in a loaded neighbour stays).
+    /// </summary>
+    /// <exception cref="ArgumentException">The landblock was not loaded through this instance.</exception>
+    public void UnloadLandblock(uint landblock)
+    {
+        if (!_loaded.ContainsKey(landblock))
+            throw new ArgumentException($"landblock 0x{landblock:X4}: was not loaded from the DAT files.", nameof(landblock));
+        World.UnloadLandblock(landblock);
+        _loaded.Remove(landblock);
+    }
+
+    /// <summary>
+    /// Keeps the (2 <paramref name="radius"/> + 1)² landblocks around <paramref name="centre"/> loaded: unloads
+    /// those loaded through this instance outside the window, then loads those inside not yet loaded (ones the
+    /// cell DAT does not hold, past the map's edge or ocean without a LandBlock, are skipped). Each load is whole
+    /// or not at all; a failure stops the call with the landblocks before it streamed.
+    /// </summary>
+    /// <param name="centre">The mover's landblock (0xXXYY).</param>
+    /// <param name="radius">Landblocks on each side (1: the 3 × 3 window).</param>
+    /// <returns>How many landblocks were loaded and unloaded.</returns>
+    public (int Loaded, int Unloaded) StreamAround(uint centre, int radius = 1)
+    {
+        if (radius is < 0 or > 8)
+            throw new ArgumentOutOfRangeException(nameof(radius), $"radius: 0 to 8 landblocks, got {radius}.");
+        int cx = (int)(centre >> 8 & 0xFF), cy = (int)(centre & 0xFF);
+        int unloaded = 0, loaded = 0;
+        foreach (uint lb in new List<uint>(_loaded.Keys))
+            if (Math.Abs((int)(lb >> 8) - cx) > radius || Math.Abs((int)(lb & 0xFF) - cy) > radius)
+            {
+                UnloadLandblock(lb);
+                unloaded++;
+            }
+        for (int x = cx - radius; x <= cx + radius; x++)
+            for (int y = cy - radius; y <= cy + radius; y++)
+            {
+                if (x is < 0 or > 0xFF || y is < 0 or > 0xFF)
+                    continue;
+                uint lb = (uint)(x << 8 | y);
+                if (_loaded.ContainsKey(lb) || World.Cells.HasLandblock(lb) || !Files.CellContains(lb << 16 | 0xFFFF))
+                    continue;
+                LoadLandblock(lb);
+                loaded++;
+            }
+        return (loaded, unloaded);
+    }
+
+    /// <summary>The physics model of a GfxObj (null when it has no physics), converted once.</summary>
+    /// <exception cref="DatReadException">It is absent, of another type or unreadable.</exception>
+    /// <exception cref="DatObjectException">Its physics is refused.</exception>
+    public PhysicsModel? Model(uint gfxObjId) =>
+        Files.Converted.GetOrAdd(gfxObjId, id => new ModelEntry(DatModels.ToPhysicsModel(Files.ReadPortal<GfxObj>(id)))).Model;
+
+    /// <summary>The setup of a model id as a static object uses it: a Setup (0x02…) converted, or a GfxObj (0x01…) as one part; converted once.</summary>
+    /// <exception cref="DatReadException">It or one of its parts is absent, of another type or unreadable.</exception>
+    /// <exception cref="DatObjectException">It is refused.</exception>
+    public PhysicsSetup Setup(uint modelId) =>
+        Files.Converted.GetOrAdd(modelId, id => (id >> 24) == 0x01
+            ? DatSetups.FromModel(Model(id))
+            : DatSetups.ToPhysicsSetup(Files.ReadPortal<Setup>(id), Model));
+
+    private DatCellStructure CellStructure(uint environmentId, uint index)
+    {
+        if (index > 0xFFFF)
+            return DatCells.ToCellStructure(Files.ReadPortal<DatEnvironment>(environmentId), index);
+        // One cache key per structure: the environment's low 16 bits and the structure's index.
+        return Files.Converted.GetOrAdd((environmentId & 0xFFFF) << 16 | index,
+            _ => DatCells.ToCellStructure(Files.ReadPortal<DatEnvironment>(environmentId), index));
+    }
+
+    private DatLandDefs LandDefs() =>
+        Files.Converted.GetOrAdd(RegionId, id => Files.ReadPortal<Region>(id).LandDefs
+            ?? throw new DatObjectException(id, "landDefs: the region has none."));
+
+    private static bool IsPortalId(uint id) => (id >> 24) is 0x01 or 0x02 or 0x03 or 0x09 or 0x0D or 0x13;
+
+    // A model may be null (a GfxObj without physics); the cache holds objects.
+    private sealed record ModelEntry(PhysicsModel? Model);
+}

@@ -1,0 +1,32 @@
+using AcDream.Core.Physics.Dat.Tests.Support;
+using AcDream.Core.Physics.Scenes;
+using DatReaderWriter.Types;
+
+namespace AcDream.Core.Physics.Dat.Tests;
+
+/// <summary>
+/// A world taken through DAT files and the package's own loader: written as DAT objects (the test-side writer,
+/// plus a Region holding its height table), opened with <see cref="DatFiles"/> and loaded landblock by landblock
+/// by <see cref="DatWorld"/>, each static object described as the scene described it.
+/// </summary>
+internal static class DatWorldPath
+{
+    public static PhysicsWorld Through(PhysicsWorld world)
+    {
+        var dat = WorldDat.From(world);
+        using var dats = new TempDats(
+            dat.GfxObjs.Cast<DBObj>().Concat(dat.Setups).Concat(dat.Environments).Append(WorldWriter.Region(dat.LandDefs)),
+            dat.LandBlocks.Cast<DBObj>().Concat(dat.Infos).Concat(dat.EnvCells));
+        using var files = dats.Open();
+        var loader = new DatWorld(files, describe: (landblock, index, owner, ownerIndex, placement) =>
+        {
+            var d = dat.Objects[(owner, ownerIndex)];
+            return new DatObjectDescription(d.Id, d.Scale, d.State, d.Flags);
+        });
+        foreach (uint landblock in dat.Landblocks)
+            loader.LoadLandblock(landblock);
+        return loader.World;
+    }
+
+    public static Scene Through(Scene scene) => scene.WithWorld(Through(scene.World));
+}

@@ -1,0 +1,59 @@
+using AcDream.Core.Physics.Dat.Tests.Support;
+using AcDream.Core.Physics.Parity;
+using AcDream.Core.Physics.Scenes;
+
+namespace AcDream.Core.Physics.Dat.Tests.Parity;
+
+/// <summary>
+/// The shared parity sets (ACE's door, trunk and boulder in shared/ace-parity; the real Holtburg cells in
+/// shared/real-cells) with their worlds taken through DAT files: every frame of every run resolves to the
+/// same bits as through the scene path (position, cell, contact, planes, normals, objects hit), and the file
+/// meets its threshold (the door bit-identical with ACE). Compiled only when a shared folder is present.
+/// </summary>
+public class SharedParityThroughDatTests
+{
+    public static TheoryData<string, string> Files()
+    {
+        var data = new TheoryData<string, string>();
+        foreach (string folder in new[] { "ace-parity", "real-cells" })
+            if (SharedFolders.Find(folder) is { } dir)
+                foreach (string file in Directory.GetFiles(dir, "*.json.gz").OrderBy(f => f, StringComparer.Ordinal))
+                    data.Add(folder, Path.GetFileName(file));
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(Files))]
+    public void EveryFrame_IsBitIdenticalThroughTheDatPath(string folder, string file)
+    {
+        var set = ParityReader.ReadFile(Path.Combine(SharedFolders.Find(folder)!, file));
+        var datSet = set with { World = DatPath.Through(set.World) };
+        var sceneEngine = new PhysicsEngine(set.World);
+        var datEngine = new PhysicsEngine(datSet.World);
+        int frames = 0;
+        foreach (var run in set.Runs)
+        {
+            MoverState a = run.Start, b = run.Start;
+            foreach (var frame in run.Frames)
+            {
+                var ta = a.Position;
+                ta.Frame.Origin += frame.Offset;
+                var tb = b.Position;
+                tb.Frame.Origin += frame.Offset;
+                var ra = sceneEngine.Resolve(run.Mover, a, ta);
+                var rb = datEngine.Resolve(run.Mover, b, tb);
+                var difference = TrajectoryReplay.Compare(run.Name, frames, TrajectoryFrame.From(ta, ra), TrajectoryFrame.From(tb, rb), 0f);
+                Assert.True(difference is null, $"{file} through DAT files: {difference}");
+                a = ra.Next;
+                b = rb.Next;
+                frames++;
+            }
+        }
+        Assert.True(frames > 0);
+        var report = ParityCheck.Check(datSet);
+        Assert.True(report.Passed, report.ToString());
+        Assert.Equal(ParityCheck.Check(set).ToString(), report.ToString());
+        if (folder == "ace-parity" && file == "door.json.gz")
+            Assert.Equal(report.Frames, report.BitIdentical);
+    }
+}
