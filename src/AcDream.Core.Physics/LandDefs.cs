@@ -18,11 +18,18 @@ public static class LandDefs
     public static bool IsValidLandblock(uint landblock) => landblock <= 0xFFFF && (landblock >> 8) < BlocksPerSide && (landblock & 0xFF) < BlocksPerSide;
 
     /// <summary>
-    /// True for a cell id retail accepts as a cell of its world (LandDefs::inbound_valid_cellid, acclient
-    /// 0x004979A0): a valid landblock (<see cref="IsValidLandblock"/>) and a cell part 1..0x40 (outdoor) or
-    /// 0x100..0xFFFD (indoor). Retail also accepts 0xFFFF, the landblock's own id, which is no cell.
+    /// Retail LandDefs::inbound_valid_cellid (acclient.c:209467, 0x004979A0): a valid landblock
+    /// (<see cref="IsValidLandblock"/>) and a cell part 1..0x40 (outdoor), 0x100..0xFFFD (indoor) or 0xFFFF (the
+    /// landblock's own id, which names no cell; retail accepts it). For a cell a position may stand in, see
+    /// <see cref="IsValidCellOfWorld"/>.
     /// </summary>
-    public static bool IsValidCellId(uint cellId)
+    public static bool IsValidCellId(uint cellId) => IsValidCellOfWorld(cellId) || (IsValidLandblock(cellId >> 16) && (cellId & 0xFFFF) == 0xFFFF);
+
+    /// <summary>
+    /// The stricter check this library applies to the cells positions name: as <see cref="IsValidCellId"/> without the
+    /// landblock's own id 0x….FFFF (no cell has it): a valid landblock and a cell part 1..0x40 or 0x100..0xFFFD.
+    /// </summary>
+    public static bool IsValidCellOfWorld(uint cellId)
     {
         uint index = cellId & 0xFFFF;
         return IsValidLandblock(cellId >> 16) && ((index >= 1 && index <= 0x40) || (index >= FirstEnvCell && index <= 0xFFFD));
@@ -95,30 +102,39 @@ public static class LandDefs
         new((cellId >> 24) * PhysicsConstants.LandblockLength, ((cellId >> 16) & 0xFF) * PhysicsConstants.LandblockLength, 0f);
 
     /// <summary>
-    /// Retail LandDefs::adjust_to_outside (LandDefs.c, 005A9BC0): re-expresses a point given in the space of
+    /// Retail LandDefs::adjust_to_outside (acclient.c:467433, 005A9BC0): re-expresses a point given in the space of
     /// <paramref name="cellId"/>'s landblock in the landblock that holds it, and labels it with the outdoor land
     /// cell below it. The point may lie beyond the block's edges (it is moved by whole landblocks); coordinates
     /// within <see cref="PhysicsConstants.Epsilon"/> of zero are first snapped to zero, as retail does, so a point
-    /// a hair west of or south of a block's corner stays in that block. Returns false, changing nothing, when the
-    /// cell id is not an outdoor (1..0x40) or indoor (0x100..0xFFFD, 0xFFFF) id, a coordinate is not finite,
-    /// or the point is outside the world.
+    /// a hair west of or south of a block's corner stays in that block. Returns false when the cell id is not an
+    /// outdoor (1..0x40) or indoor (0x100..0xFFFD, 0xFFFF) id, a coordinate is not finite, or the point is outside
+    /// the world; then, as retail, the cell id is set to 0 (and the snap to zero has been applied to the point when the
+    /// cell id was one of those).
     /// </summary>
-    /// <param name="cellId">In: any cell of the landblock the point is relative to. Out: the outdoor land cell holding it.</param>
+    /// <param name="cellId">In: any cell of the landblock the point is relative to. Out: the outdoor land cell holding it, or 0 on failure.</param>
     /// <param name="local">In: the point, relative to that landblock's south-west corner. Out: relative to the new landblock's (Z unchanged).</param>
     public static bool TryAdjustToOutside(ref uint cellId, ref Vector3 local)
     {
         uint index = cellId & 0xFFFF;
         if (!((index >= 1 && index <= 0x40) || (index >= FirstEnvCell && index <= 0xFFFD) || index == 0xFFFF))
+        {
+            cellId = 0;
             return false;
-        if (!float.IsFinite(local.X) || !float.IsFinite(local.Y))
-            return false;
+        }
+        // Retail writes the snapped coordinates back before it looks the cell up (so also when that fails).
+        if (MathF.Abs(local.X) < PhysicsConstants.Epsilon)
+            local.X = 0f;
+        if (MathF.Abs(local.Y) < PhysicsConstants.Epsilon)
+            local.Y = 0f;
         // Retail computes in double (x87); so do we, so that the cell and the wrapped coordinate agree.
-        double x = MathF.Abs(local.X) < PhysicsConstants.Epsilon ? 0.0 : local.X;
-        double y = MathF.Abs(local.Y) < PhysicsConstants.Epsilon ? 0.0 : local.Y;
+        double x = local.X, y = local.Y;
         double gx = (cellId >> 24) * 8.0 + Math.Floor(x / PhysicsConstants.LandCellLength);
         double gy = ((cellId >> 16) & 0xFF) * 8.0 + Math.Floor(y / PhysicsConstants.LandCellLength);
         if (!(gx >= 0 && gy >= 0 && gx < CellsPerSide && gy < CellsPerSide))
+        {
+            cellId = 0;
             return false;
+        }
         cellId = LandCellAtGlobal((int)gx, (int)gy);
         local = new Vector3(Wrap(x), Wrap(y), local.Z);
         return true;

@@ -27,11 +27,27 @@ public sealed class PhysicsWorld
     /// landblock's own objects afterwards, skipping those still registered
     /// (<see cref="ShadowObjectRegistry.Contains"/>). All or nothing: a landblock already loaded, an env cell
     /// or building not in this landblock, or one that cannot be added throws naming it, and the world is left
-    /// as it was. Single writer, as every change of the world.
+    /// as it was. Single writer, as every change of the world: a second thread loading or unloading a landblock, or
+    /// changing the registry, meanwhile is refused with an <see cref="InvalidOperationException"/> before it changes
+    /// anything (as the registry refuses a second writer), and the world stays usable.
     /// </summary>
+    /// <exception cref="InvalidOperationException">Another thread is loading or unloading a landblock or changing the registry.</exception>
     public void LoadLandblock(Terrain terrain, IReadOnlyList<EnvCell>? envCells = null, IReadOnlyList<Building>? buildings = null)
     {
         ArgumentNullException.ThrowIfNull(terrain);
+        Objects.BeginStreaming(nameof(LoadLandblock));
+        try
+        {
+            Load(terrain, envCells, buildings);
+        }
+        finally
+        {
+            Objects.EndStreaming();
+        }
+    }
+
+    private void Load(Terrain terrain, IReadOnlyList<EnvCell>? envCells, IReadOnlyList<Building>? buildings)
+    {
         if (Cells.HasLandblock(terrain.Landblock))
             throw new ArgumentException($"landblock 0x{terrain.Landblock:X4}: is already loaded.", nameof(terrain));
         Cells.AddLandblock(terrain);
@@ -73,15 +89,25 @@ public sealed class PhysicsWorld
     /// queries see the change at their next call; a mover whose state names a removed cell (its position or
     /// contact-plane cell) is then refused with an <see cref="ArgumentException"/> naming that cell, so a host
     /// unloads only landblocks its movers do not stand in or touch. Allocates nothing once the world has been
-    /// loaded and unloaded before. Single writer: no engine or query may run meanwhile.
+    /// loaded and unloaded before. Single writer: no engine or query may run meanwhile; a second thread loading or
+    /// unloading a landblock, or changing the registry, is refused as by <see cref="LoadLandblock"/>.
     /// </summary>
     /// <param name="landblock">The landblock id (x byte, y byte: the high 16 bits of its cell ids).</param>
     /// <exception cref="ArgumentException">The landblock has no cell in the world; the message names it.</exception>
+    /// <exception cref="InvalidOperationException">Another thread is loading or unloading a landblock or changing the registry.</exception>
     public void UnloadLandblock(uint landblock)
     {
-        if (!Cells.HasLandblock(landblock))
-            throw new ArgumentException($"landblock 0x{landblock:X4}: is not loaded.", nameof(landblock));
-        Objects.DropLandblock(landblock);
-        Cells.RemoveLandblock(landblock);
+        Objects.BeginStreaming(nameof(UnloadLandblock));
+        try
+        {
+            if (!Cells.HasLandblock(landblock))
+                throw new ArgumentException($"landblock 0x{landblock:X4}: is not loaded.", nameof(landblock));
+            Objects.DropLandblock(landblock);
+            Cells.RemoveLandblock(landblock);
+        }
+        finally
+        {
+            Objects.EndStreaming();
+        }
     }
 }

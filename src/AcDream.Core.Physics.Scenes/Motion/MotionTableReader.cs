@@ -47,19 +47,23 @@ public static class MotionTableReader
         foreach (var (name, value) in sd.Fields())
             styleDefaults[Key(name, sd.Child(name))] = JsonRead.Id(value, sd.Child(name));
 
+        // The table's one count of entries (MotionTable.MaxEntries): animations, cycles, modifiers and every link, read
+        // up to the cap and no further.
+        int entries = 0;
         var animations = new List<Animation>();
         var an = o.Obj("animations");
         foreach (var (name, value) in an.Fields())
+        {
+            Count(ref entries, an.Child(name));
             animations.Add(ReadAnimation(Key(name, an.Child(name)), value, an.Child(name)));
+        }
 
-        var cycles = ReadMotions(o.Obj("cycles"));
-        var modifiers = ReadMotions(o.Obj("modifiers"));
+        var cycles = ReadMotions(o.Obj("cycles"), ref entries);
+        var modifiers = ReadMotions(o.Obj("modifiers"), ref entries);
         var links = new Dictionary<uint, IReadOnlyDictionary<uint, MotionData>>();
         var ln = o.Obj("links");
         foreach (var (name, value) in ln.Fields())
-            links[Key(name, ln.Child(name))] = ReadMotions(new JsonObj(value, ln.Child(name)));
-        if (cycles.Count + modifiers.Count + links.Count + animations.Count > MotionTable.MaxEntries)
-            throw new SceneFormatException(path, $"a motion table holds at most {MotionTable.MaxEntries} entries.");
+            links[Key(name, ln.Child(name))] = ReadMotions(new JsonObj(value, ln.Child(name)), ref entries);
         try
         {
             return new MotionTable(id, defaultStyle, styleDefaults, cycles, modifiers, links, animations);
@@ -71,17 +75,22 @@ public static class MotionTableReader
         }
     }
 
-    private static Dictionary<uint, MotionData> ReadMotions(JsonObj o)
+    private static Dictionary<uint, MotionData> ReadMotions(JsonObj o, ref int entries)
     {
         var motions = new Dictionary<uint, MotionData>();
         foreach (var (name, value) in o.Fields())
         {
             string at = o.Child(name);
-            if (motions.Count >= MotionTable.MaxEntries)
-                throw new SceneFormatException(at, $"at most {MotionTable.MaxEntries} entries.");
+            Count(ref entries, at);
             motions[Key(name, at)] = ReadMotion(value, at);
         }
         return motions;
+    }
+
+    private static void Count(ref int entries, string at)
+    {
+        if (++entries > MotionTable.MaxEntries)
+            throw new SceneFormatException(at, $"a motion table holds at most {MotionTable.MaxEntries} entries (animations, cycles, modifiers and links together).");
     }
 
     private static MotionData ReadMotion(JsonElement e, string path)

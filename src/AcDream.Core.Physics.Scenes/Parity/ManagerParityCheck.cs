@@ -56,31 +56,46 @@ internal static class ManagerParityCheck
             ref readonly var frame = ref file.Frames[f];
             foreach (var call in frame.Calls)
             {
-                switch (call.Kind)
+                try
                 {
-                    case MoveToKind.MoveToPosition:
-                        motion.MoveToPosition(call.Target, call.Parameters, file.Mover, state, body);
-                        break;
-                    case MoveToKind.TurnToHeading:
-                        motion.TurnToHeading(call.Parameters, file.Mover, state, body);
-                        break;
-                    default:
-                        sought = call.ObjectId;
-                        motion.MoveToObject(call.ObjectId, CreatureRadius, CreatureHeight, call.Parameters, file.Mover, state, body);
-                        break;
+                    switch (call.Kind)
+                    {
+                        case MoveToKind.MoveToPosition:
+                            motion.MoveToPosition(call.Target, call.Parameters, file.Mover, state, body);
+                            break;
+                        case MoveToKind.TurnToHeading:
+                            motion.TurnToHeading(call.Parameters, file.Mover, state, body);
+                            break;
+                        default:
+                            sought = call.ObjectId;
+                            motion.MoveToObject(call.ObjectId, CreatureRadius, CreatureHeight, call.Parameters, file.Mover, state, body);
+                            break;
+                    }
+                }
+                catch (ArgumentException ex)
+                {
+                    throw MotionParityCheck.Refused(call.Path, "the call", ex);
                 }
             }
             // The target's voyeur update: inside the MoveToObject call (set_target's immediate update), else from the
             // target's own quantum, which runs after the mover's (README "Scheduling"): the mover's next UseTime sees it.
             bool atCall = frame.Calls.Length > 0;
             if (atCall && frame.TargetUpdate is { } first && sought != 0)
-                motion.UpdateMoveToTarget(sought, first, frame.InterpolatedUpdate ?? first, file.Mover, state, body);
+                Update(motion, sought, first, frame.InterpolatedUpdate ?? first, file, state, body, f);
             bool endedBefore = motion.MoveToStatus == MoveToStatus.Ended;
-            var step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
+            Body.BodyStepResult step;
+            try
+            {
+                step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
+            }
+            catch (ArgumentException ex)
+            {
+                throw MotionParityCheck.Refused($"frames[{f}]", "the frame's step", ex);
+            }
             state = step.Next;
             body = step.Body;
             if (!atCall && frame.TargetUpdate is { } update && sought != 0)
-                motion.UpdateMoveToTarget(sought, update, frame.InterpolatedUpdate ?? update, file.Mover, state, body);
+                Update(motion, sought, update, frame.InterpolatedUpdate ?? update, file, state, body, f);
             bool endedNow = !endedBefore && motion.MoveToStatus == MoveToStatus.Ended;
             int e = f + shift;
             if (e >= file.Frames.Length)
@@ -164,4 +179,17 @@ internal static class ManagerParityCheck
     }
 
     private static string Name(MoveToError e) => e == MoveToError.None ? "None" : e.ToString();
+
+    // A target update the library refuses names the frame's recorded target position.
+    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, ManagerParityFile file, in MoverState state, in Body.BodyState body, int f)
+    {
+        try
+        {
+            motion.UpdateMoveToTarget(sought, update, interpolated, file.Mover, state, body);
+        }
+        catch (ArgumentException ex)
+        {
+            throw MotionParityCheck.Refused($"frames[{f}].targetInfo.targetPosition", "the target update", ex);
+        }
+    }
 }

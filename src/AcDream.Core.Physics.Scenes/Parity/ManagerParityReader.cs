@@ -11,7 +11,11 @@ using AcDream.Core.Physics.Scenes;
 namespace AcDream.Core.Physics.Parity;
 
 /// <summary>A MoveTo call a manager parity file makes before a frame's time passes.</summary>
-internal readonly record struct ManagerCall(MoveToKind Kind, Position Target, MoveToParameters Parameters, uint ObjectId);
+internal readonly record struct ManagerCall(MoveToKind Kind, Position Target, MoveToParameters Parameters, uint ObjectId)
+{
+    /// <summary>The JSON path of the recorded command the call was read from (for the errors of a refused call).</summary>
+    public string Path { get; init; } = string.Empty;
+}
 
 /// <summary>One frame of a manager parity file: the calls, the target update delivered (the target's position and the interpolated one), and ACE's state after it.</summary>
 internal readonly record struct ManagerFrame(
@@ -119,7 +123,7 @@ internal static class ManagerParityReader
             if (text.StartsWith("WeenieObject.OnMoveComplete(", StringComparison.Ordinal))
                 completed = text["WeenieObject.OnMoveComplete(".Length..].TrimEnd(')');
             else if (text.StartsWith("PhysicsObj.", StringComparison.Ordinal))
-                calls.Add(ParseCall(text, at, before));
+                calls.Add(ParseCall(text, at, before) with { Path = at });
         }
         Position? update = null, interpolated = null;
         if (f.Opt("targetInfo") is { ValueKind: JsonValueKind.Object } ti)
@@ -165,6 +169,8 @@ internal static class ManagerParityReader
         if (text.StartsWith("PhysicsObj.MoveToPosition((", StringComparison.Ordinal))
         {
             int close = text.IndexOf(')');
+            if (close < "PhysicsObj.MoveToPosition((".Length)
+                throw new SceneFormatException(path, $"unreadable position in \"{text}\".");
             var xyz = text["PhysicsObj.MoveToPosition((".Length..close].Split(',', StringSplitOptions.TrimEntries);
             if (xyz.Length != 3 || !float.TryParse(xyz[0], NumberStyles.Float, c, out float x) || !float.TryParse(xyz[1], NumberStyles.Float, c, out float y)
                 || !float.TryParse(xyz[2], NumberStyles.Float, c, out float z))

@@ -3,6 +3,7 @@ using System.Globalization;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Parity;
 
@@ -52,13 +53,31 @@ internal static class MotionParityCheck
         {
             ref readonly var expected = ref file.Frames[f];
             string? callFailure = null;
-            foreach (var call in expected.Calls)
+            for (int k = 0; k < expected.Calls.Length; k++)
             {
-                string result = Apply(motion, call, file.Mover, ref state, ref body);
+                ref readonly var call = ref expected.Calls[k];
+                string result;
+                try
+                {
+                    result = Apply(motion, call, file.Mover, ref state, ref body);
+                }
+                catch (ArgumentException ex)
+                {
+                    // One call per recorded command, in order: k is the command's index in the file.
+                    throw Refused($"frames[{f}].commands[{k}]", "the call", ex);
+                }
                 if (result != call.Expected)
                     callFailure ??= $"call {call.Kind} 0x{call.Motion:X8}: expected {call.Expected}, actual {result}";
             }
-            var step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
+            Body.BodyStepResult step;
+            try
+            {
+                step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
+            }
+            catch (ArgumentException ex)
+            {
+                throw Refused($"frames[{f}]", "the frame's step", ex);
+            }
             state = step.Next;
             body = step.Body;
             frames++;
@@ -90,6 +109,13 @@ internal static class MotionParityCheck
             : null;
         return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note);
     }
+
+    /// <summary>
+    /// Input the library refused while a motion or manager parity file ran, as a <see cref="SceneFormatException"/>
+    /// naming the JSON path of the call or frame (the tool puts the file's name first).
+    /// </summary>
+    internal static SceneFormatException Refused(string path, string what, ArgumentException ex) =>
+        new(path, $"{what} was refused: {SceneFormatException.Wrap(string.Empty, ex).Detail}", ex);
 
     private static string Apply(ObjectMotion motion, in MotionCall call, MoverDescription mover, ref MoverState state, ref Body.BodyState body)
     {

@@ -102,7 +102,10 @@ internal static class MotionParityReader
         return new MotionParityFile(name, world, mover, table, skills, start, body, 1.0 / rate, frames);
     }
 
-    /// <summary>The motion table file a parity file names beside it ("table"): a plain file name, at most <see cref="MaxTableBytes"/>.</summary>
+    /// <summary>
+    /// The motion table file a parity file names beside it ("table"): a plain file name of a regular file of at most
+    /// <see cref="MaxTableBytes"/>, read through the bounded reader (a FIFO or a device is refused unopened).
+    /// </summary>
     internal static MotionTable ReadTable(JsonObj o, string directory)
     {
         string tableFile = o.String("table");
@@ -111,11 +114,18 @@ internal static class MotionParityReader
         string tablePath = Path.Combine(directory, tableFile);
         if (!File.Exists(tablePath))
             throw new SceneFormatException("table", $"{tableFile} does not exist beside the file.");
-        if (new FileInfo(tablePath).Length > MaxTableBytes)
-            throw new SceneFormatException("table", $"{tableFile} is larger than {MaxTableBytes} bytes.");
+        string text;
         try
         {
-            return MotionTableReader.Parse(File.ReadAllText(tablePath));
+            text = BoundedFile.ReadText(tablePath, MaxTableBytes, "motion table file");
+        }
+        catch (SceneFormatException ex)
+        {
+            throw new SceneFormatException("table", $"{tableFile} {ex.Detail}", ex);
+        }
+        try
+        {
+            return MotionTableReader.Parse(text);
         }
         catch (SceneFormatException ex)
         {

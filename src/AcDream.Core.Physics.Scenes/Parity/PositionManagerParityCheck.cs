@@ -61,19 +61,27 @@ internal static class PositionManagerParityCheck
         for (int f = 0; f < n; f++)
         {
             ref readonly var frame = ref file.Frames[f];
-            if (frame.StickTo != 0)
+            try
             {
-                stuckTo = frame.StickTo;
-                manager.StickTo(stuckTo, TargetRadius, TargetHeight, file.Mover);
+                if (frame.StickTo != 0)
+                {
+                    stuckTo = frame.StickTo;
+                    manager.StickTo(stuckTo, TargetRadius, TargetHeight, file.Mover);
+                }
+                // The target moves after the mover's quantum: the mover's next quantum sees the position after the last one.
+                if (stuckTo != 0)
+                    manager.UpdateTarget(stuckTo, target);
+                if (frame.InterpolateTo is { } to)
+                    manager.InterpolateTo(to, false, file.Mover, ref state);
+                var step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
+                state = step.Next;
+                body = step.Body;
             }
-            // The target moves after the mover's quantum: the mover's next quantum sees the position after the last one.
-            if (stuckTo != 0)
-                manager.UpdateTarget(stuckTo, target);
-            if (frame.InterpolateTo is { } to)
-                manager.InterpolateTo(to, false, file.Mover, ref state);
-            var step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
-            state = step.Next;
-            body = step.Body;
+            catch (ArgumentException ex)
+            {
+                // The frame's recorded events (stick_to_object, @InterpolateTo) or its step.
+                throw MotionParityCheck.Refused($"frames[{f}]", "the frame's calls or step", ex);
+            }
             if (stuckTo != 0 && stickEnded < 0 && manager.StickyTargetId == 0)
                 stickEnded = f;
             if (frame.Target is { } moved)

@@ -20,7 +20,11 @@ public sealed class MotionTable
     private readonly Dictionary<uint, Dictionary<uint, MotionData>> _links;
     private readonly Dictionary<uint, Animation> _animations;
 
-    /// <summary>The most animations one motion may list, the most frames an animation may have, and the most entries a table may hold (a reader's caps).</summary>
+    /// <summary>
+    /// The most animations one motion may list, the most frames an animation may have, and the most entries a table may
+    /// hold: its animations, cycles, modifiers and links (every target motion under every link key) together. The
+    /// constructor enforces them, and the reader stops at the same numbers.
+    /// </summary>
     public const int MaxAnimsPerMotion = 64, MaxFrames = 100_000, MaxEntries = 100_000;
 
     /// <summary>The largest framerate accepted, frames/s (retail's tables use 10 to 60).</summary>
@@ -44,11 +48,24 @@ public sealed class MotionTable
         ArgumentNullException.ThrowIfNull(modifiers);
         ArgumentNullException.ThrowIfNull(links);
         ArgumentNullException.ThrowIfNull(animations);
+        // The size first, before anything is checked or copied: one count for the reader and the constructor.
+        long entries = (long)cycles.Count + modifiers.Count;
+        foreach (var (_, inner) in links)
+            entries += inner?.Count ?? 0;
+        var animationList = new List<Animation>();
+        foreach (var animation in animations)
+        {
+            if (entries + animationList.Count >= MaxEntries)
+                throw new ArgumentException($"entries: a table holds at most {MaxEntries} entries (animations, cycles, modifiers and links together), got more.", nameof(cycles));
+            animationList.Add(animation);
+        }
+        if (entries + animationList.Count > MaxEntries)
+            throw new ArgumentException($"entries: a table holds at most {MaxEntries} entries (animations, cycles, modifiers and links together), got {entries + animationList.Count}.", nameof(cycles));
         Id = id;
         DefaultStyle = defaultStyle;
         _animations = new Dictionary<uint, Animation>();
         int a = 0;
-        foreach (var animation in animations)
+        foreach (var animation in animationList)
         {
             string at = $"animations[{a++}]";
             if (animation is null)
@@ -67,9 +84,6 @@ public sealed class MotionTable
                 throw new ArgumentException($"links[0x{outer:X8}]: is null.", nameof(links));
             _links[outer] = Copy(inner, $"links[0x{outer:X8}]");
         }
-        if (_cycles.Count + _modifiers.Count + _links.Count > MaxEntries)
-            throw new ArgumentException($"cycles: a table holds at most {MaxEntries} entries.", nameof(cycles));
-
         if (!_styleDefaults.ContainsKey(defaultStyle))
             throw new ArgumentException($"defaultStyle: style 0x{defaultStyle:X8} has no entry in styleDefaults.", nameof(defaultStyle));
         foreach (var (style, substate) in _styleDefaults)

@@ -80,7 +80,16 @@ public readonly record struct MoveToParameters
     public float FailDistance { get; init; } = float.MaxValue;
     /// <summary>desired_heading: the heading of a TurnToHeading, or the final heading with <see cref="MoveToFlags.UseFinalHeading"/> (default 0, facing +Y).</summary>
     public float DesiredHeading { get; init; }
-    /// <summary>speed: the motion commands' speed (default 1).</summary>
+    /// <summary>
+    /// speed: the motion commands' speed (default 1; more than 0, at most 100). A move arrives when a quantum ends within
+    /// the arrival distance (<see cref="DistanceToObject"/>, from the mover's cylinder with UseSpheres): retail's
+    /// HandleMoveToPosition (acclient.c:345576) tests the distance only after each quantum. So a straight run arrives
+    /// for certain while one quantum's step (the run speed, 4 m/s × run rate × speed, times the quantum) is at most twice
+    /// that distance: with the retail player (radius 0.48 m), the default 0.6 m, run rate 2.375 and 30 quanta a second,
+    /// up to Speed 6.8. Faster, retail's behaviour is kept: a runner whose steps fall past the band is turned back by the
+    /// aim correction and, under the client's <see cref="MoveToProgressRule.CountOnly"/>, circles the target for ever
+    /// (at Speed 100 it steps 31.7 m a quantum); a caller that moves that fast sets a larger DistanceToObject.
+    /// </summary>
     public float Speed { get; init; } = 1f;
     /// <summary>
     /// walk_run_threshhold: with CanWalk and CanRun, the mover runs when the distance beyond <see cref="DistanceToObject"/>

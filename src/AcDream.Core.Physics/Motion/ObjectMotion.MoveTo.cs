@@ -215,10 +215,12 @@ public sealed partial class ObjectMotion
         Height = _height,
     };
 
+    // The origin first: a NaN or far-off origin has no cell of its own (a caller's LandCellAt gives 0), and the
+    // message must name what is wrong, not the cell that follows from it.
     private static void CheckTarget(in Position p, string field)
     {
-        Guard.CellInWorld(p.CellId, field);
         Guard.Finite(p.Frame.Origin, field, ".origin");
+        Guard.CellInWorld(p.CellId, field);
     }
 
     /// <summary>

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Snapshots;
 
@@ -16,6 +17,13 @@ internal static class MotionSection
 {
     // Caps on what a load accepts (far above what a motion table produces).
     internal const int MaxPending = 256, MaxModifiers = 64, MaxNodes = 1024;
+
+    /// <summary>
+    /// The fastest a loaded sequence node may play, frames/s: a table's fastest framerate (<see cref="MotionTable.MaxFramerate"/>)
+    /// at DoMotion's largest speed (100) and the fastest retail run rate (4.5). The step crosses at most this many frames a
+    /// second of game time, so a loaded state is stepped in bounded time (a framerate of 1e11 did not return).
+    /// </summary>
+    internal const float MaxSequenceFramerate = MotionTable.MaxFramerate * 100f * 4.5f;
 
     public static void Write(SnapshotWriter w, ObjectMotion motion)
     {
@@ -165,14 +173,23 @@ internal static class MotionSection
             if (!table.Animations.TryGetValue(id, out var animation))
                 throw r.Fail(f + ".animation", $"animation 0x{id:X8} is not in motion table 0x{table.Id:X8}");
             int low = Frame(ref r, f + ".lowFrame", animation), high = Frame(ref r, f + ".highFrame", animation);
-            float framerate = r.F32(f + ".framerate");
+            float framerate = Bounded(ref r, f + ".framerate", MaxSequenceFramerate, "frames/s");
             nodes[i] = new Sequence.Node { Animation = animation, LowFrame = low, HighFrame = high, Framerate = framerate };
         }
         int firstCyclic = Index(ref r, "motion.sequence.firstCyclic", nodes.Length);
         int current = Index(ref r, "motion.sequence.current", nodes.Length);
         double frameNumber = r.F64("motion.sequence.frameNumber");
-        var velocity = r.Vec("motion.sequence.velocity");
-        var omega = r.Vec("motion.sequence.omega");
+        // The frame number lies in the current node's animation (a played range ends one frame past its last, less
+        // EPSILON), so a step crosses a bounded number of frames; an empty sequence keeps any small number (unread).
+        int frames = nodes.Length == 0 ? MotionTable.MaxFrames : nodes[current].Animation.FrameCount;
+        if (!(frameNumber >= (nodes.Length == 0 ? -frames : -1) && frameNumber <= frames))
+            throw r.Fail("motion.sequence.frameNumber", nodes.Length == 0
+                ? $"{frameNumber} is not within ±{frames}"
+                : $"{frameNumber} is not within the current animation 0x{nodes[current].Animation.Id:X8} (-1 to {frames})");
+        // The body step's limits on a body's velocity and omega (InputLimits.MaxExtent per second): the sequence's
+        // are added to the body's offset every quantum.
+        var velocity = BoundedVec(ref r, "motion.sequence.velocity", InputLimits.MaxExtent, "m/s");
+        var omega = BoundedVec(ref r, "motion.sequence.omega", InputLimits.MaxExtent, "rad/s");
         if (r.Remaining != 0)
             throw r.Fail("motion", $"{r.Remaining} bytes past the end of the section's data");
 
@@ -198,6 +215,17 @@ internal static class MotionSection
         motion.Manager.RestorePending(managerPending, counter);
         motion.AnimationSequence.Restore(nodes, firstCyclic, current, frameNumber, velocity, omega);
     }
+
+    private static float Bounded(ref SnapshotReader r, string field, float limit, string unit)
+    {
+        float v = r.F32(field);
+        if (!(MathF.Abs(v) <= limit))
+            throw r.Fail(field, $"{v} is not within ±{limit} {unit}");
+        return v;
+    }
+
+    private static Vector3 BoundedVec(ref SnapshotReader r, string field, float limit, string unit) =>
+        new(Bounded(ref r, field + ".x", limit, unit), Bounded(ref r, field + ".y", limit, unit), Bounded(ref r, field + ".z", limit, unit));
 
     private static byte Flags(ref SnapshotReader r, string field, byte known)
     {

@@ -239,6 +239,10 @@ public static class Snapshot
         }
         if (objects is null)
             throw r.Fail("objects", "section is missing");
+        // Every writer writes the places (section 5) after the objects: without them the objects would load in the
+        // wrong order in their cells' lists, silently changing which is tested first. A snapshot cut there is refused.
+        if (order is null)
+            throw r.Fail("cellOrder", "section is missing (the snapshot is cut short after its objects)");
         int done = 0;
         try
         {

@@ -136,12 +136,13 @@ internal static class Guard
     }
 
     /// <summary>
-    /// A cell id in retail's world (LandDefs::inbound_valid_cellid): the landblock's x and y bytes are both
-    /// at most 0xFE (the world is 255 × 255 landblocks), the cell part 1..0x40 (outdoor) or 0x100..0xFFFD (indoor).
+    /// A cell id in retail's world naming a cell (<see cref="LandDefs.IsValidCellOfWorld"/>: retail's inbound_valid_cellid
+    /// without the landblock's own id 0xFFFF): the landblock's x and y bytes are both at most 0xFE (the world is
+    /// 255 × 255 landblocks), the cell part 1..0x40 (outdoor) or 0x100..0xFFFD (indoor).
     /// </summary>
     public static void CellInWorld(uint cellId, string field)
     {
-        if (!LandDefs.IsValidCellId(cellId))
+        if (!LandDefs.IsValidCellOfWorld(cellId))
             throw new ArgumentException($"{field}: cell 0x{cellId:X8} is outside the retail world (landblock x and y must be 0x00..0xFE, the cell part 0x0001..0x0040 or 0x0100..0xFFFD).", field);
     }
 

@@ -279,6 +279,19 @@ public sealed class ShadowObjectRegistry
 
     private void EndWrite() => Volatile.Write(ref _writing, 0);
 
+    /// <summary>
+    /// Streaming (<see cref="PhysicsWorld.LoadLandblock"/>, <see cref="PhysicsWorld.UnloadLandblock"/>) changes the cell
+    /// graph the registry's writers read, so it takes the same writer's flag for the whole load or unload: a second
+    /// streaming thread, or a registry writer meanwhile, is refused before it changes anything.
+    /// </summary>
+    internal void BeginStreaming(string operation)
+    {
+        if (Interlocked.CompareExchange(ref _writing, 1, 0) != 0)
+            throw new InvalidOperationException($"PhysicsWorld.{operation}: another thread is loading or unloading a landblock or modifying the registry; the world takes one writer at a time. This call changed nothing.");
+    }
+
+    internal void EndStreaming() => EndWrite();
+
     [DoesNotReturn, MethodImpl(MethodImplOptions.NoInlining)]
     private static void ThrowConcurrentWrite(string operation) =>
         throw new InvalidOperationException($"ShadowObjectRegistry.{operation}: another thread is modifying the registry; it takes one writer at a time. This call changed nothing.");
@@ -292,19 +305,12 @@ public sealed class ShadowObjectRegistry
     /// </summary>
     internal void DropLandblock(uint landblock)
     {
-        BeginWrite(nameof(DropLandblock));
-        try
-        {
-            Version++;
-            for (uint i = 1; i <= 64; i++)
-                DropCell((landblock << 16) | i);
-            foreach (var env in _graph.EnvCellsOf(landblock))
-                DropCell(env.Id);
-        }
-        finally
-        {
-            EndWrite();
-        }
+        // The caller holds the writer's flag (BeginStreaming).
+        Version++;
+        for (uint i = 1; i <= 64; i++)
+            DropCell((landblock << 16) | i);
+        foreach (var env in _graph.EnvCellsOf(landblock))
+            DropCell(env.Id);
     }
 
     private void DropCell(uint cellId)
@@ -337,18 +343,7 @@ public sealed class ShadowObjectRegistry
     /// appended to those cells' lists (the objects' other rows are left as they are). The objects are visited
     /// in the registry's order, which depends only on the order of registrations and removals.
     /// </summary>
-    internal void ListInLandblock(uint landblock)
-    {
-        BeginWrite(nameof(ListInLandblock));
-        try
-        {
-            ListInLandblockCore(landblock);
-        }
-        finally
-        {
-            EndWrite();
-        }
-    }
+    internal void ListInLandblock(uint landblock) => ListInLandblockCore(landblock); // the caller holds the writer's flag (BeginStreaming)
 
     private void ListInLandblockCore(uint landblock)
     {

@@ -29,6 +29,55 @@ public class MotionTableTests
         Assert.Equal(8, table.Animations[0x03000F02].FrameCount);
     }
 
+    // Links: two keys of `perKey` targets each, every one the same one-animation motion.
+    private static Dictionary<uint, IReadOnlyDictionary<uint, MotionData>> ManyLinks(int perKey)
+    {
+        var data = Cycle();
+        var links = new Dictionary<uint, IReadOnlyDictionary<uint, MotionData>>();
+        for (uint key = 0; key < 2; key++)
+        {
+            var inner = new Dictionary<uint, MotionData>(perKey);
+            for (uint m = 0; m < perKey; m++)
+                inner[0x45000000u + m] = data;
+            links[ReadyKey + key] = inner;
+        }
+        return links;
+    }
+
+    [Fact]
+    public void TheConstructor_CountsEveryLinkTowardsTheEntryCap_AsTheReaderDoes()
+    {
+        // 150 000 link entries under two keys: the reader refuses more than MaxEntries; so must the constructor.
+        var ex = Assert.Throws<ArgumentException>(() => Build(new() { [ReadyKey] = Cycle() }, links: ManyLinks(75_000)));
+        Assert.StartsWith($"entries: a table holds at most {MotionTable.MaxEntries} entries", ex.Message);
+        // Exactly the cap (one animation, one cycle, the rest links) is a table.
+        int links = MotionTable.MaxEntries - 2;
+        var table = Build(new() { [ReadyKey] = Cycle() }, links: ManyLinks(links / 2));
+        Assert.Equal(links, table.LinkKeys.Sum(k => table.LinksFrom(k)!.Count));
+        // One more, as an animation, is refused.
+        ex = Assert.Throws<ArgumentException>(() => Build(new() { [ReadyKey] = Cycle() },
+            [new Animation(0x03000001, 4, []), new Animation(0x03000002, 4, [])], ManyLinks(links / 2)));
+        Assert.StartsWith("entries:", ex.Message);
+    }
+
+    [Fact]
+    public void TheReader_RefusesOneEntryPastTheCap_CountingLinksAsTheConstructorDoes()
+    {
+        // One animation, one cycle and MaxEntries - 1 links: one past the cap, all in one link key (the old reader
+        // counted the key, not its targets).
+        var json = new System.Text.StringBuilder("""
+            { "id": "0x09000001", "defaultStyle": "0x8000003D", "styleDefaults": { "0x8000003D": "0x41000003" },
+              "animations": { "0x03000001": { "numFrames": 4 } },
+              "cycles": { "0x003D0003": { "anims": [{ "animId": "0x03000001", "framerate": 30 }] } }, "modifiers": {},
+              "links": { "0x003D0003": {
+            """);
+        for (int m = 0; m < MotionTable.MaxEntries - 1; m++)
+            json.Append(m == 0 ? "" : ",").Append("\"0x").Append((0x45000000 + m).ToString("X8")).Append("\": {\"anims\": []}");
+        json.Append("} } }");
+        var ex = Assert.Throws<SceneFormatException>(() => MotionTableReader.Parse(json.ToString()));
+        Assert.StartsWith($"links.0x003D0003.0x{0x45000000 + MotionTable.MaxEntries - 2:X8}: a motion table holds at most {MotionTable.MaxEntries} entries", ex.Message);
+    }
+
     [Fact]
     public void AMissingDefaultCycle_IsRefused()
     {

@@ -30,6 +30,54 @@ public class MoveToTests
         return -1;
     }
 
+    // The arrival band of a straight run at the target: HandleMoveToPosition (acclient.c:345576) tests the distance only
+    // after each quantum, so a quantum's step of more than twice the arrival distance (DistanceToObject 0.6 plus the
+    // mover's radius 0.48, the cylinder distance) can pass over the band. Run skill 200: run rate (0.5 × 11 + 4) / 4 =
+    // 2.375 (MovementSystem::GetRunRate), so a step of RunAnimSpeed 4 × 2.375 × Speed / 30 = 0.3167 × Speed m: 1.90 m at
+    // Speed 6 (within 2 × 1.08 = 2.16 m), 2.22 m at Speed 7 (beyond it).
+    private static (int Arrived, float Closest, float Farthest) RunThirtyMetres(float speed, int frames)
+    {
+        var rig = Rig();
+        var target = TestGeometry.At(60f, 90f, 0f);
+        rig.Motion.MoveToPosition(target, MoveToParameters.Default with { Speed = speed }, rig.Mover, rig.State, rig.Body);
+        float closest = float.MaxValue, farthest = 0f;
+        for (int f = 0; f < frames; f++)
+        {
+            rig.Frames(1);
+            float d = Vector2.Distance(new Vector2(rig.Origin.X, rig.Origin.Y), new Vector2(60f, 90f));
+            closest = Math.Min(closest, d);
+            if (f >= 30 * 10)
+                farthest = Math.Max(farthest, d); // once past the first pass, how far it strays
+            if (rig.Motion.MoveToStatus == MoveToStatus.Ended)
+                return (f, closest, farthest);
+        }
+        return (-1, closest, farthest);
+    }
+
+    [Theory]
+    [InlineData(1f)]
+    [InlineData(6f)]
+    public void AThirtyMetreRun_Arrives_WhileOneQuantumsStepIsWithinTheArrivalBand(float speed)
+    {
+        var (arrived, _, _) = RunThirtyMetres(speed, 30 * 60);
+        Assert.True(arrived >= 0, $"Speed {speed}: a step of {0.3167f * speed:0.00} m a quantum is within the 2.16 m band, yet the move did not arrive in 60 s");
+    }
+
+    [Fact]
+    public void RetailQuirk_AFasterRunCanPassOverTheArrivalBand_AndThenCirclesTheTarget()
+    {
+        // Retail's behaviour beyond the band (MoveToParameters.Speed): whether a quantum ends in the band depends on where
+        // the steps fall (Speed 7 and 8 happen to land in it here); nothing catches a pass, the aim correction turns the
+        // runner back (acclient.c:345576) and the client's CountOnly rule never gives up, so a runner that passed goes on
+        // round the target for ever, never farther than about a step and a half from it. Speed 100: 31.7 m a quantum,
+        // over the 30 m target at the first step.
+        const float step = 0.3167f * 100f;
+        var (arrived, closest, farthest) = RunThirtyMetres(100f, 30 * 60);
+        Assert.Equal(-1, arrived);
+        Assert.True(closest < step, $"the runner never came back within a step of the target (closest {closest} m)");
+        Assert.True(farthest < 1.5f * step, $"the runner strayed {farthest} m from the target");
+    }
+
     [Fact]
     public void Defaults_AreRetailsConstructor()
     {

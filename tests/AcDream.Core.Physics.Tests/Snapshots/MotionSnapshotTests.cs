@@ -85,6 +85,13 @@ public class MotionSnapshotTests
     [InlineData("modifier count", "snapshot motion.manager.modifiers.count (byte")]
     [InlineData("cut short", "snapshot motion.sequence.omega.z (byte")]
     [InlineData("missing", "snapshot motion (byte")]
+    // A sequence the step could not bound (a bit-flip sweep found the first two hanging Step) or would throw on.
+    [InlineData("framerate 1.29e11", "snapshot motion.sequence[")]
+    [InlineData("framerate 1e6", "snapshot motion.sequence[")]
+    [InlineData("frame number 1e10", "snapshot motion.sequence.frameNumber (byte")]
+    [InlineData("frame number -5", "snapshot motion.sequence.frameNumber (byte")]
+    [InlineData("velocity 1e30", "snapshot motion.sequence.velocity.x (byte")]
+    [InlineData("omega 1e30", "snapshot motion.sequence.omega.z (byte")]
     public void ACorruptedMotionSection_IsRefusedNamingTheField_AndTheTargetIsUnchanged(string row, string message)
     {
         var source = new MotionRig();
@@ -103,6 +110,12 @@ public class MotionSnapshotTests
             "modifier count" => Patch(good, modifiersAt, BitConverter.GetBytes(1_000_000u)),
             "cut short" => [.. good[..(start - 4)], .. BitConverter.GetBytes(end - start - 1), .. good[start..(end - 1)]],
             "missing" => good[..(start - 5)],
+            "framerate 1.29e11" => Patch(good, lastNodeAt + 12, BitConverter.GetBytes(1.29e11f)),
+            "framerate 1e6" => Patch(good, lastNodeAt + 12, BitConverter.GetBytes(1e6f)),
+            "frame number 1e10" => Patch(good, frameAt, BitConverter.GetBytes(1e10)),
+            "frame number -5" => Patch(good, frameAt, BitConverter.GetBytes(-5.0)),
+            "velocity 1e30" => Patch(good, frameAt + 8, BitConverter.GetBytes(1e30f)),
+            "omega 1e30" => Patch(good, frameAt + 28, BitConverter.GetBytes(1e30f)),
             _ => throw new ArgumentException(row),
         };
         Assert.Equal((uint)source.Motion.ModifierCount, BitConverter.ToUInt32(good, modifiersAt));

@@ -182,6 +182,25 @@ public class SnapshotTests
     }
 
     [Fact]
+    public void AnObjectsSnapshotCutBetweenItsSections_IsRefused_AndTheWorldIsUnchanged()
+    {
+        // Cut after the objects section, the snapshot would load with every object but not its places in the cells'
+        // lists (the order a cell's objects are tested in): refused as cut short instead.
+        var setup = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] };
+        var source = TestGeometry.FlatWorld();
+        for (uint id = 1; id <= 3; id++)
+            source.Objects.Register(id, setup, TestGeometry.At(100 + id, 100, 0.5f));
+        var bytes = Snapshot.SaveObjects(source, _ => 7u);
+        int objectsEnd = 6 + 5 + BitConverter.ToInt32(bytes, 7);
+        Assert.Equal(5, bytes[objectsEnd]); // the places' section follows
+        var target = TestGeometry.FlatWorld();
+        var ex = Assert.Throws<InvalidDataException>(() => Snapshot.LoadObjects(bytes[..objectsEnd], target, _ => setup));
+        Assert.StartsWith("snapshot cellOrder (byte", ex.Message);
+        Assert.Equal(0, target.Objects.Count);
+        Assert.Equal(3, Snapshot.LoadObjects(bytes, target, _ => setup));
+    }
+
+    [Fact]
     public void AnObjectListedInHundredsOfCells_GetsEveryPlaceBack()
     {
         // A BSP box 300 m across in the middle of a 3 x 3 landblock group is listed in some 324 land cells. In

@@ -134,13 +134,48 @@ public class WorldCoordinatesTests
     [InlineData(0xA9B40000u)] // cell index 0
     [InlineData(0xA9B40041u)] // between the land cells (1..0x40) and the env cells (0x100..)
     [InlineData(0xA9B4FFFEu)]
-    public void TryAdjustToOutside_InvalidCellIndex_ChangesNothing(uint id)
+    public void TryAdjustToOutside_InvalidCellIndex_SetsTheCellToZero_AsRetail(uint id)
     {
+        // adjust_to_outside (acclient.c:467433): a failure writes 0 into the cell id; the point is not touched.
         uint cell = id;
         var local = new Vector3(-5f, 5f, 0f);
         Assert.False(LandDefs.TryAdjustToOutside(ref cell, ref local));
-        Assert.Equal(id, cell);
+        Assert.Equal(0u, cell);
         Assert.Equal(new Vector3(-5f, 5f, 0f), local);
+    }
+
+    [Fact]
+    public void TryAdjustToOutside_APointOutsideTheWorld_SetsTheCellToZero_AfterTheSnap()
+    {
+        // Retail snaps |x| below EPSILON to 0 before it finds the point outside the world (here 1 km west of 0x0000).
+        uint cell = 0x00000001;
+        var local = new Vector3(-1000f, 1e-5f, 3f);
+        Assert.False(LandDefs.TryAdjustToOutside(ref cell, ref local));
+        Assert.Equal(0u, cell);
+        Assert.Equal(new Vector3(-1000f, 0f, 3f), local);
+        // And from the landblock's own id 0x….FFFF, which retail takes as a landblock's cell.
+        cell = 0xA9B4FFFF;
+        local = new Vector3(30f, 50f, 0f);
+        Assert.True(LandDefs.TryAdjustToOutside(ref cell, ref local));
+        Assert.Equal(0xA9B4000Bu, cell);
+    }
+
+    [Theory]
+    // inbound_valid_cellid (acclient.c:209467): cell part 1..0x40, 0x100..0xFFFD or 0xFFFF; x and y bytes below 0xFF.
+    [InlineData(0xA9B4FFFFu, true, false)]  // the landblock's own id: retail's check takes it; no cell has it
+    [InlineData(0xA9B40001u, true, true)]
+    [InlineData(0xA9B40040u, true, true)]
+    [InlineData(0xA9B40100u, true, true)]
+    [InlineData(0xA9B4FFFDu, true, true)]
+    [InlineData(0xA9B40000u, false, false)]
+    [InlineData(0xA9B40041u, false, false)]
+    [InlineData(0xA9B4FFFEu, false, false)]
+    [InlineData(0xFFB4FFFFu, false, false)] // x byte 0xFF: outside the world
+    [InlineData(0xA9FF0001u, false, false)]
+    public void IsValidCellId_IsRetailsInboundValidCellid_AndIsValidCellOfWorld_LeavesOutTheLandblocksOwnId(uint id, bool retail, bool cell)
+    {
+        Assert.Equal(retail, LandDefs.IsValidCellId(id));
+        Assert.Equal(cell, LandDefs.IsValidCellOfWorld(id));
     }
 
     [Fact]
