@@ -41,6 +41,11 @@ public static class Program
                                         draw the scene (top and side views) with each
                                         mover's path coloured by outcome, numbered, and
                                         named in a legend (also printed)
+          view SCENE [TRAJ] [--out FILE.html]
+                                        write one self-contained HTML page that shows the
+                                        scene's collision shapes and every frame in 3D
+                                        (default file SCENE.view.html; runs the scene when
+                                        no TRAJ)
           parity DIR                    check the engine against every parity file (*.json.gz) in
                                         DIR: one line per file; exit 1 when a file misses its
                                         threshold
@@ -119,6 +124,12 @@ public static class Program
                     if (options.Out is null)
                         throw new UsageException("plot needs --out FILE.png");
                     return PlotCommand.Run(LoadScene(options.Positional[0]), options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null, options.Out, stdout);
+                case "view":
+                    if (options.Positional.Count is < 1 or > 2)
+                        throw new UsageException(options.Positional.Count < 1 ? "view needs SCENE" : $"unexpected argument '{options.Positional[2]}'");
+                    return View.ViewCommand.Run(LoadScene(options.Positional[0]),
+                        options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null,
+                        options.Positional.Count > 1 ? options.Positional[1] : null, options.Out, stdout);
                 case "parity":
                     Expect(options, 1, "parity needs DIR");
                     return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
@@ -187,7 +198,7 @@ public static class Program
             string a = args[i];
             switch (a)
             {
-                case "--out":
+                case "--out" or "-o":
                     if (i + 1 >= args.Length) throw new UsageException("--out needs a file name");
                     o.Out = args[++i];
                     break;
