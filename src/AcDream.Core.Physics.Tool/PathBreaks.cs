@@ -1,45 +1,62 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tool;
 
 /// <summary>
-/// Where a drawn path is broken: a frame that jumps farther than any walk, run, fall or flight of the mover could (a
-/// blip back to a server's position, a teleport). Drawing a line across such a jump would show a path the mover never
-/// took, and a 150 m teleport would set a plot's scale and squash the rest of the path into a smear.
+/// Where a drawn path is broken: a frame that moves the mover farther than it asked to go (a blip back to a server's
+/// position, a teleport). A line drawn across such a jump would show a path the mover never took, and a 150 m teleport
+/// would set a plot's scale and squash the rest of the path into a smear.
 /// </summary>
 internal static class PathBreaks
 {
-    /// <summary>A frame moving less than this (metres) is never a break.</summary>
-    public const float MinimumJump = 1f;
-
-    /// <summary>A break moves more than this many times the mover's median frame move.</summary>
-    public const float MedianMultiple = 4f;
+    /// <summary>How far (metres) a frame may move beyond what it asked for before it breaks the path.</summary>
+    public const float Slack = 1f;
 
     /// <summary>A break longer than this (metres) is a teleport: the plot leaves what follows it out of its scale.</summary>
     public const float TeleportDistance = 50f;
 
     /// <summary>
-    /// The indices <c>i</c> (1 or more) of <paramref name="points"/> where the path breaks between point <c>i - 1</c> and point
-    /// <c>i</c>: the move is more than <see cref="MinimumJump"/> and more than <see cref="MedianMultiple"/> times the median
-    /// of the path's moves (so a fast arrow's 5 m frames are not breaks, while a run's 2 m blip is).
+    /// How far each frame asked to go: an offset mover's frame, the distance from where it started to its target; a body's
+    /// frame, twice the elapsed time times the fastest of its velocity before and after the step and its desired velocity
+    /// (a fall gains speed within the step). <paramref name="points"/> holds the start, then every frame's position, in
+    /// one landblock's frame (<paramref name="frameCell"/>).
     /// </summary>
-    public static List<int> Find(IReadOnlyList<Vector3> points)
+    public static float[] Asked(IReadOnlyList<TrajectoryFrame> frames, IReadOnlyList<Vector3> points, uint frameCell)
+    {
+        var asked = new float[frames.Count];
+        float speedBefore = 0f;
+        for (int f = 0; f < frames.Count; f++)
+        {
+            var frame = frames[f];
+            if (frame.Step is { } step)
+            {
+                float speed = MathF.Max(MathF.Max(speedBefore, frame.Velocity.Length()), step.DesiredVelocity.Length());
+                asked[f] = 2f * speed * (float)step.Elapsed;
+                speedBefore = frame.Velocity.Length();
+            }
+            else if (frame.Target.CellId != 0)
+                asked[f] = Vector3.Distance(points[f], frame.Target.Origin + LandDefs.BlockOffset(frameCell, frame.Target.CellId));
+        }
+        return asked;
+    }
+
+    /// <summary>
+    /// The frames <c>f</c> before which the path breaks: the move from point <c>f</c> (the start, or frame <c>f - 1</c>) to
+    /// point <c>f + 1</c> (frame <c>f</c>) is longer than <paramref name="asked"/>[f] plus <see cref="Slack"/>.
+    /// </summary>
+    public static List<int> Find(IReadOnlyList<Vector3> points, IReadOnlyList<float> asked)
     {
         var breaks = new List<int>();
-        if (points.Count < 2)
-            return breaks;
-        var moves = new float[points.Count - 1];
-        for (int i = 1; i < points.Count; i++)
-            moves[i - 1] = Vector3.Distance(points[i - 1], points[i]);
-        var sorted = (float[])moves.Clone();
-        Array.Sort(sorted);
-        float median = sorted[sorted.Length / 2];
-        float limit = MathF.Max(MinimumJump, MedianMultiple * median);
-        for (int i = 0; i < moves.Length; i++)
-            if (moves[i] > limit)
-                breaks.Add(i + 1);
+        for (int f = 0; f + 1 < points.Count && f < asked.Count; f++)
+            if (Vector3.Distance(points[f], points[f + 1]) > asked[f] + Slack)
+                breaks.Add(f);
         return breaks;
     }
+
+    /// <summary>The breaks of one mover's path (<see cref="Find"/> with <see cref="Asked"/>).</summary>
+    public static List<int> Of(IReadOnlyList<TrajectoryFrame> frames, IReadOnlyList<Vector3> points, uint frameCell) =>
+        Find(points, Asked(frames, points, frameCell));
 }

@@ -276,7 +276,7 @@ internal static class ViewData
         for (int f = 0; f < frames.Count; f++) w.WriteNumberValue((int)OutcomeOf(frames[f], points[f], points[f + 1]));
         w.WriteEndArray();
         w.WriteStartArray("breaks");
-        foreach (int i in PathBreaks.Find(points)) w.WriteNumberValue(i - 1);
+        foreach (int f in PathBreaks.Of(frames, points, frameCell)) w.WriteNumberValue(f);
         w.WriteEndArray();
         Vectors(w, "contactNormal", frames, f => f.ContactPlane.Normal);
         Floats(w, "contactD", frames, f => f.ContactPlane.D);

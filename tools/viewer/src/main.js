@@ -400,7 +400,8 @@ window.addEventListener('resize', resize);
 
 resize();
 setMover(0);
-renderNow();
+// The first picture is drawn on the next animation frame (requested by setMover): the page, its panel and its controls
+// are ready first, while the browser compiles the shaders.
 
 // For tests and the console: read and drive the page.
 window.acdreamView = {
