@@ -260,6 +260,20 @@ public sealed class ViewPageTests : IDisposable
     }
 
     [Fact]
+    public void ThePlot_OfRemoteSmoothing_SaysWhereTheTeleportWent_AndLeavesItOutOfItsScale()
+    {
+        // The plot breaks its paths the same way; the 150 m teleport at frame 120 is named on its own line, not drawn
+        // into the scale (before, the scale ran 150 m north and the rest of the paths were a smear).
+        string png = Path.Combine(_dir, "remote.png");
+        var (code, output, err) = Tool("plot", "remote-smoothing", "--out", png);
+        Assert.Equal(0, code);
+        Assert.Equal("", err);
+        var teleports = output.Split('\n').Where(l => l.Contains("teleported", StringComparison.Ordinal)).ToArray();
+        Assert.StartsWith("  remote: teleported 150.0 m at frame 120 to (", Assert.Single(teleports));
+        Assert.EndsWith("); what follows is outside the plot's scale", teleports[0].TrimEnd());
+    }
+
+    [Fact]
     public void AnArrowsFiveMetreFrames_AreNotBreaks()
     {
         // fast-post-10hz flies 5 m a frame (50 m/s at 10 Hz): every frame alike, so none is a blip.
