@@ -80,6 +80,7 @@ try {
 }
 
 // ---- movers: paths, markers, spheres, normals
+const outcomeColors = C.OUTCOMES.map((o) => new Color(o.color));
 const movers = data.movers.map((mover, index) => {
   const n = mover.frames;
   const points = [mover.start];
@@ -90,7 +91,7 @@ const movers = data.movers.map((mover, index) => {
   let count = 0;
   for (let f = 0; f < n; f++) {
     if (!breaks.has(f)) {
-      const a = points[f], b = points[f + 1], c = new Color(C.OUTCOMES[mover.outcome[f]].color);
+      const a = points[f], b = points[f + 1], c = outcomeColors[mover.outcome[f]];
       pos.push(...a, ...b);
       col.push(c.r, c.g, c.b, c.r, c.g, c.b);
       count++;
@@ -104,7 +105,7 @@ const movers = data.movers.map((mover, index) => {
   const ahead = new LineSegments(segGeometry, new LineBasicMaterial({ color: C.PATH_AHEAD, transparent: true, opacity: 0.8 }));
   const markerPos = [], markerCol = [];
   for (let f = 0; f < n; f++) {
-    const c = new Color(C.OUTCOMES[mover.outcome[f]].color);
+    const c = outcomeColors[mover.outcome[f]];
     markerPos.push(...points[f + 1]);
     markerCol.push(c.r, c.g, c.b);
   }
