@@ -48,7 +48,7 @@ const stage = $('stage');
   for (const s of Object.values(C.SOURCES)) items.push(key(s.color, s.name));
   items.push(key(C.BACK_FACE, 'back of a one-sided polygon'));
   items.push(key(C.NON_COLLIDING, 'object shape never tested (its rung of the dispatch)'));
-  items.push(key(C.HIT, 'object hit this frame'));
+  items.push(key(C.HIT, 'object hit this frame, or the polygon its collision normal came from'));
   items.push(key(C.MOVER, 'mover spheres'));
   items.push(key(C.CONTACT_PLANE, 'contact plane'));
   items.push(key(C.COLLISION_NORMAL, 'collision normal'));
@@ -218,6 +218,7 @@ let frame = 0;
 let playing = false;
 let pending = false;
 let lastRenderMs = 0;
+let inferred = 0;
 
 function requestRender() {
   if (pending || !renderer) return;
@@ -304,6 +305,13 @@ function show() {
     targetCross.position.set(t[0] + o[0], t[1] + o[1], t[2] + o[2]);
   }
   world.highlight(mover.collided[f]);
+  // No object hit but a collision normal: light up the cell or building polygon it most likely came from.
+  inferred = 0;
+  if (mover.collided[f].length === 0 && (flags & FLAG.collisionNormalValid) !== 0 && mover.spheres.length) {
+    const q = mover.rotation ? quat(mover.rotation, f) : [1, 0, 0, 0];
+    const centres = mover.spheres.map((s) => { const r = rotate(q, s); return [p[0] + r[0], p[1] + r[1], p[2] + r[2]]; });
+    inferred = world.inferHit(vec(mover.collisionNormal, f), centres, Math.max(...mover.spheres.map((s) => s[3])));
+  } else world.inferHit([0, 0, 0], [], 0);
   const cell = mover.cell[f];
   const edges = (cell & 0xffff) >= 0x100 ? world.cellEdges(cell) : null;
   cellOutline.visible = !!edges;
@@ -323,7 +331,7 @@ function show() {
   }
   $('slider').value = String(f);
   $('frameLabel').textContent = `frame ${f} / ${mover.frames - 1}`;
-  $('panel').innerHTML = panelHtml(data, current, f, frameBreak(m, f));
+  $('panel').innerHTML = panelHtml(data, current, f, frameBreak(m, f), inferred);
   requestRender();
 }
 

@@ -15,7 +15,7 @@ const v3 = (v) => v.map(String).join(' ');
 const yes = (b) => (b ? 'yes' : 'no');
 
 /** The panel's HTML for frame f of mover m. */
-export function panelHtml(data, m, f, breakJump) {
+export function panelHtml(data, m, f, breakJump, inferred) {
   const mover = data.movers[m];
   const flags = mover.flags[f];
   const rows = [];
@@ -48,6 +48,7 @@ export function panelHtml(data, m, f, breakJump) {
   rows.push(row('slidingNormalValid', 'sliding', yes(flags & FLAG.slidingNormalValid), false));
   rows.push(row('slidingNormal', '  normal', v3(vec(mover.slidingNormal, f))));
   rows.push(row('collided', 'hit objects', mover.collided[f].length ? mover.collided[f].map(hex).join(' ') : '-'));
+  if (inferred > 0) rows.push(row('inferredHit', 'hit polygon', `${inferred} lit (inferred from the normal)`, false));
   if (mover.rotation) {
     const name = (id, speed) => (id === 0 ? '-' : `${data.commandNames[String(id)] ?? hex(id)} x${speed}`);
     rows.push(row('heading', 'heading (deg)', heading(quat(mover.rotation, f)).toFixed(1)));

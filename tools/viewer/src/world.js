@@ -127,6 +127,21 @@ export function buildWorld(data) {
     }
   const hitMaterial = new MeshLambertMaterial({ color: HIT, emissive: HIT, emissiveIntensity: 0.4, side: DoubleSide });
   let lit = [];
+  // The planes of the cell, building and object polygons, to find the polygon a collision normal came from.
+  const planes = [];
+  for (const shape of data.shapes) {
+    if (shape.form !== 'polygon' || shape.source === 'portal' || shape.source === 'terrain') continue;
+    const v = shape.vertices;
+    const ax = v[3] - v[0], ay = v[4] - v[1], az = v[5] - v[2], bx = v[6] - v[0], by = v[7] - v[1], bz = v[8] - v[2];
+    let nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+    const len = Math.hypot(nx, ny, nz);
+    if (!(len > 0)) continue;
+    nx /= len; ny /= len; nz /= len;
+    planes.push({ shape, n: [nx, ny, nz], d: -(nx * v[0] + ny * v[1] + nz * v[2]) });
+  }
+  const hitPolygon = new Mesh(new BufferGeometry(), hitMaterial);
+  hitPolygon.visible = false;
+  group.add(hitPolygon);
   return {
     group,
     /** Colours the polygons by their cell id, or back by what they belong to. */
@@ -142,6 +157,48 @@ export function buildWorld(data) {
         if (!og) continue;
         for (const mesh of og.meshes) { lit.push([mesh, mesh.material]); mesh.material = hitMaterial; }
       }
+    },
+    /**
+     * The polygons a collision normal most likely came from (a trajectory records the normal, not the polygon): those
+     * facing along the normal (either way for a two-sided one) whose plane passes within a sphere's radius and 0.25 m of
+     * one of the mover's sphere centres, with the centre over the polygon (its edges pushed out as far). Lit up; returns
+     * how many.
+     */
+    inferHit(normal, centres, radius) {
+      const found = [];
+      for (const { shape, n, d } of planes) {
+        const dot = n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2];
+        if (!(dot > 0.999 || (shape.sides !== 'single' && dot < -0.999))) continue;
+        const reach = radius + 0.25;
+        const near = centres.some((c) => {
+          const h = n[0] * c[0] + n[1] * c[1] + n[2] * c[2] + d;
+          if (Math.abs(h) > reach) return false;
+          const v = shape.vertices, k = v.length / 3;
+          for (let i = 0; i < k; i++) {
+            const j = (i + 1) % k;
+            const ex = v[3 * j] - v[3 * i], ey = v[3 * j + 1] - v[3 * i + 1], ez = v[3 * j + 2] - v[3 * i + 2];
+            // The edge's outward direction in the polygon's plane: edge × normal (counter-clockwise from the front).
+            let ox = ey * n[2] - ez * n[1], oy = ez * n[0] - ex * n[2], oz = ex * n[1] - ey * n[0];
+            const ol = Math.hypot(ox, oy, oz);
+            if (!(ol > 0)) continue;
+            ox /= ol; oy /= ol; oz /= ol;
+            if ((c[0] - v[3 * i]) * ox + (c[1] - v[3 * i + 1]) * oy + (c[2] - v[3 * i + 2]) * oz > reach) return false;
+          }
+          return true;
+        });
+        if (near) found.push(shape);
+      }
+      const triangles = [];
+      for (const shape of found) {
+        const v = shape.vertices, k = v.length / 3;
+        for (let i = 1; i + 1 < k; i++)
+          for (const m of [0, i, i + 1]) triangles.push(v[3 * m], v[3 * m + 1], v[3 * m + 2]);
+      }
+      hitPolygon.geometry.dispose();
+      hitPolygon.geometry = new BufferGeometry();
+      hitPolygon.geometry.setAttribute('position', new Float32BufferAttribute(triangles, 3));
+      hitPolygon.visible = triangles.length > 0;
+      return found.length;
     },
     /** The edges of an indoor cell's polygons and portals, or null. */
     cellEdges(id) {

@@ -37,11 +37,17 @@ function runTool(...args) {
   return r.stdout.trim();
 }
 
-/** Records a scene, writes its page; returns the trajectory (parsed) and the page's path. */
-function page(scene, name) {
-  const traj = join(out, `${name}.trajectory.json`);
+/**
+ * Writes a scene's page from a trajectory: the committed replay of a built-in scene (the test suite checks it still
+ * replays), else one recorded now. Returns the trajectory (parsed) and the page's path.
+ */
+function page(scene, name, recorded = null) {
   const html = join(out, `${name}.html`);
-  runTool('record', scene, '--out', traj);
+  let traj = recorded;
+  if (traj === null) {
+    traj = join(out, `${name}.trajectory.json`);
+    runTool('record', scene, '--out', traj);
+  }
   console.log(runTool('view', scene, traj, '--out', html));
   return { trajectory: JSON.parse(readFileSync(traj, 'utf8')), html };
 }
@@ -71,8 +77,9 @@ const userDataDir = mkdtempSync(join(tmpdir(), 'acdream-viewer-chromium-'));
 let browser;
 let context;
 try {
-  const door = page('door', 'door');
-  const motion = page('run-turn', 'run-turn');
+  const replays = join(root, 'tests/AcDream.Core.Physics.Tests/Replays');
+  const door = page('door', 'door', join(replays, 'door.trajectory.json'));
+  const motion = page('run-turn', 'run-turn', join(replays, 'run-turn.trajectory.json'));
   const cottage = page(cottageScene(), 'cottage-10000');
 
   context = await chromium.launchPersistentContext(userDataDir, {
@@ -231,6 +238,11 @@ try {
     const p50 = times[150], p95 = times[284];
     check(p95 < FRAME_LIMIT_MS, `cottage-10000: scrub step p95 ${p95.toFixed(1)} ms, over ${FRAME_LIMIT_MS} ms`);
     await comparePanel(p, cottage.trajectory, 0, 9999, 'cottage-10000');
+    // A frame against the shell (a collision normal, no object hit): the polygon it came from is lit and named.
+    const wall = cottage.trajectory.movers[0].frames.findIndex((fr) => fr.collisionNormal.valid && fr.collided.length === 0);
+    check(wall >= 0, 'cottage-10000: no frame meets the shell');
+    const inferred = await p.evaluate((f) => { window.acdreamView.setFrame(f); return document.querySelector('#panel td[data-field="inferredHit"]')?.textContent ?? ''; }, wall);
+    check(/^[1-9]\d* lit /.test(inferred), `cottage-10000: frame ${wall} against the shell lights no polygon ("${inferred}")`);
     check(errors.length === 0, `cottage-10000: console errors: ${errors.join(' | ')}`);
     speed = { wallMs, readyMs, pictureMs, p50, p95 };
     await p.close();
