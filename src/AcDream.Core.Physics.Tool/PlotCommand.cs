@@ -40,6 +40,7 @@ internal static class PlotCommand
         uint frameCell = scene.World.Cells.CellIds.FirstOrDefault();
         var paths = Paths(scene, trajectory, frameCell);
         var (min, max) = Region(paths, Reports(scene, frameCell));
+        var teleports = Teleports(paths);
         bool alongX = MainAxisIsX(paths);
 
         var multiplot = new Multiplot();
@@ -74,10 +75,46 @@ internal static class PlotCommand
         stdout.WriteLine($"{scene.Name}: {Program.Count(paths.Count, "mover")}, {Program.Count(counts.Sum(), "frame")} ({Describe(counts)}){headings}; plot written to {outPath}");
         foreach (string name in names)
             stdout.WriteLine(Program.Printable($"  {name}"));
+        foreach (string teleport in teleports)
+            stdout.WriteLine(Program.Printable($"  {teleport}"));
         return 0;
     }
 
-    private sealed record MoverPath(string Name, Vector3 Start, IReadOnlyList<TrajectoryFrame> Frames, Vector3[] Points);
+    /// <summary>A mover's path: its start, its frames' positions, and the frames before which the path breaks (<see cref="PathBreaks"/>).</summary>
+    private sealed record MoverPath(string Name, Vector3 Start, IReadOnlyList<TrajectoryFrame> Frames, Vector3[] Points, HashSet<int> Breaks)
+    {
+        /// <summary>The path up to its first teleport (a break longer than <see cref="PathBreaks.TeleportDistance"/>): what sets the plot's scale.</summary>
+        public IEnumerable<Vector3> Home()
+        {
+            yield return Start;
+            var previous = Start;
+            for (int f = 0; f < Points.Length; f++)
+            {
+                if (Breaks.Contains(f) && Vector3.Distance(previous, Points[f]) > PathBreaks.TeleportDistance)
+                    yield break;
+                previous = Points[f];
+                yield return previous;
+            }
+        }
+
+        /// <summary>The runs of the path between its breaks (each at least one point).</summary>
+        public List<Vector3[]> Runs()
+        {
+            var runs = new List<Vector3[]>();
+            var run = new List<Vector3> { Start };
+            for (int f = 0; f < Points.Length; f++)
+            {
+                if (Breaks.Contains(f))
+                {
+                    runs.Add(run.ToArray());
+                    run.Clear();
+                }
+                run.Add(Points[f]);
+            }
+            runs.Add(run.ToArray());
+            return runs;
+        }
+    }
 
     /// <summary>Each mover's start and frame positions in the plot's frame.</summary>
     private static List<MoverPath> Paths(Scene scene, Trajectory trajectory, uint frameCell)
@@ -90,21 +127,32 @@ internal static class PlotCommand
             var start = sceneMover is null
                 ? (points.Length > 0 ? points[0] : Vector3.Zero)
                 : sceneMover.Start.Position.Origin + LandDefs.BlockOffset(frameCell, sceneMover.Start.Position.CellId);
-            list.Add(new MoverPath(mover.Name, start, mover.Frames, points));
+            var all = points.Prepend(start).ToArray();
+            list.Add(new MoverPath(mover.Name, start, mover.Frames, points, PathBreaks.Of(mover.Frames, all, frameCell).ToHashSet()));
         }
         return list;
     }
 
-    /// <summary>The box around every path, 3 m of margin sideways and 1 m up and down (at least 0 to 4 m high).</summary>
+    /// <summary>
+    /// The box around every path up to its first teleport (so a 150 m teleport does not set the scale) and the reported
+    /// positions within <see cref="PathBreaks.TeleportDistance"/> of it, 3 m of margin sideways and 1 m up and down (at
+    /// least 0 to 4 m high).
+    /// </summary>
     private static (Vector3 Min, Vector3 Max) Region(List<MoverPath> paths, IEnumerable<Vector3> reports)
     {
         var min = new Vector3(float.MaxValue);
         var max = new Vector3(float.MinValue);
-        foreach (var v in paths.SelectMany(p => p.Points.Prepend(p.Start)).Concat(reports))
+        foreach (var v in paths.SelectMany(p => p.Home()))
         {
             min = Vector3.Min(min, v);
             max = Vector3.Max(max, v);
         }
+        foreach (var v in reports)
+            if (min.X > max.X || Vector3.Distance(Vector3.Clamp(v, min, max), v) <= PathBreaks.TeleportDistance)
+            {
+                min = Vector3.Min(min, v);
+                max = Vector3.Max(max, v);
+            }
         if (min.X > max.X)
             return (new Vector3(0, 0, -1), new Vector3(10, 10, 4));
         min -= new Vector3(3, 3, 1);
@@ -116,16 +164,30 @@ internal static class PlotCommand
     {
         float dx = 0, dy = 0;
         foreach (var p in paths)
-        {
-            var previous = p.Start;
-            foreach (var v in p.Points)
-            {
-                dx += MathF.Abs(v.X - previous.X);
-                dy += MathF.Abs(v.Y - previous.Y);
-                previous = v;
-            }
-        }
+            foreach (var run in p.Runs())
+                for (int i = 1; i < run.Length; i++)
+                {
+                    dx += MathF.Abs(run[i].X - run[i - 1].X);
+                    dy += MathF.Abs(run[i].Y - run[i - 1].Y);
+                }
         return dx > dy;
+    }
+
+    /// <summary>Each teleport (a break longer than <see cref="PathBreaks.TeleportDistance"/>), said in words: the plot's scale leaves out what follows it.</summary>
+    private static List<string> Teleports(List<MoverPath> paths)
+    {
+        var lines = new List<string>();
+        foreach (var p in paths)
+            foreach (int f in p.Breaks.Order())
+            {
+                var from = f == 0 ? p.Start : p.Points[f - 1];
+                var to = p.Points[f];
+                float jump = Vector3.Distance(from, to);
+                if (jump > PathBreaks.TeleportDistance)
+                    lines.Add(string.Create(System.Globalization.CultureInfo.InvariantCulture,
+                        $"{p.Name}: teleported {jump:0.0} m at frame {f} to ({to.X:0.0}, {to.Y:0.0}, {to.Z:0.0}); what follows is outside the plot's scale"));
+            }
+        return lines;
     }
 
     private static void DrawWorld(PhysicsWorld world, uint frameCell, Vector3 min, Vector3 max, Plot top, Plot side, bool alongX)
@@ -214,11 +276,14 @@ internal static class PlotCommand
             (xs[k], ys[k], hs[k], zs[k]) = (new(), new(), new(), new());
         foreach (var p in paths)
         {
-            var all = p.Points.Prepend(p.Start).ToArray();
-            var path = top.Add.Scatter(all.Select(v => (double)v.X).ToArray(), all.Select(v => (double)v.Y).ToArray());
-            Line(path, PathColor, LinePattern.Solid);
-            var sidePath = side.Add.Scatter(all.Select(v => (double)(alongX ? v.X : v.Y)).ToArray(), all.Select(v => (double)v.Z).ToArray());
-            Line(sidePath, PathColor, LinePattern.Solid);
+            // One line per run between breaks: a blip or teleport leaves a gap rather than a line the mover never walked.
+            foreach (var run in p.Runs())
+            {
+                var path = top.Add.Scatter(run.Select(v => (double)v.X).ToArray(), run.Select(v => (double)v.Y).ToArray());
+                Line(path, PathColor, LinePattern.Solid);
+                var sidePath = side.Add.Scatter(run.Select(v => (double)(alongX ? v.X : v.Y)).ToArray(), run.Select(v => (double)v.Z).ToArray());
+                Line(sidePath, PathColor, LinePattern.Solid);
+            }
             var previous = p.Start;
             Vector3? lastNormal = null;
             for (int f = 0; f < p.Frames.Count; f++)
@@ -265,7 +330,7 @@ internal static class PlotCommand
         for (int i = 0; i < paths.Count; i++)
         {
             var p = paths[i];
-            var end = p.Points.Length > 0 ? p.Points[^1] : p.Start;
+            var end = p.Home().Last(); // the last point inside the plot's scale
             float endClear = Clearance(end, placed);
             var at = endClear >= LabelGap || endClear >= Clearance(p.Start, placed) ? end : p.Start;
             placed.Add(new Vector2(at.X, at.Y));

@@ -44,6 +44,11 @@ public static class Program
           dat DIR [LANDBLOCK]           summarise the DAT files in DIR (client_portal.dat and
                                         client_cell_1.dat), or one landblock's physics content:
                                         cells, portals, buildings, objects, polygons, BSP depth
+          view SCENE [TRAJ] [--out FILE.html]
+                                        write one self-contained HTML page that shows the
+                                        scene's collision shapes and every frame in 3D
+                                        (default file SCENE.view.html; runs the scene when
+                                        no TRAJ)
           parity DIR                    check the engine against every parity file (*.json.gz) in
                                         DIR: one line per file; exit 1 when a file misses its
                                         threshold
@@ -130,6 +135,12 @@ public static class Program
                     if (options.Positional.Count is < 1 or > 2)
                         throw new UsageException(options.Positional.Count < 1 ? "dat needs DIR" : $"unexpected argument '{options.Positional[2]}'");
                     return DatCommand.Run(options.Positional[0], options.Positional.Count > 1 ? options.Positional[1] : null, stdout);
+                case "view":
+                    if (options.Positional.Count is < 1 or > 2)
+                        throw new UsageException(options.Positional.Count < 1 ? "view needs SCENE" : $"unexpected argument '{options.Positional[2]}'");
+                    return View.ViewCommand.Run(LoadScene(options, options.Positional[0]),
+                        options.Positional.Count > 1 ? LoadTrajectory(options.Positional[1]) : null,
+                        options.Positional.Count > 1 ? options.Positional[1] : null, options.Out, stdout);
                 case "parity":
                     Expect(options, 1, "parity needs DIR");
                     return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
@@ -203,7 +214,7 @@ public static class Program
             string a = args[i];
             switch (a)
             {
-                case "--out":
+                case "--out" or "-o":
                     if (i + 1 >= args.Length) throw new UsageException("--out needs a file name");
                     o.Out = args[++i];
                     break;
