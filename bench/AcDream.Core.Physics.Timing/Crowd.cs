@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
-using System.Threading.Tasks;
+using System.Diagnostics;
+using System.Threading;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Motion;
@@ -18,7 +19,8 @@ namespace AcDream.Core.Physics.Timing;
 /// creature's transition meets the others' cylinders there.
 /// <para>
 /// A tick (30 Hz) as a server runs it: the player's new position is written to the registry; each creature
-/// (in parallel when <c>threads</c> is 2, creatures split into halves, one engine per thread) is given its
+/// (with <c>threads</c> 2, the main thread and a second one take chunks of 8 creatures from one counter, one
+/// engine per thread) is given its
 /// orders by its AI and takes one body step through its motion layer against the registry as it stood at the
 /// start of the tick; then, on one thread, every creature that moved is moved in the registry, in creature
 /// order. Each creature's step reads only the registry and writes only its own state, so the split does not
@@ -26,7 +28,7 @@ namespace AcDream.Core.Physics.Timing;
 /// against an older commit.
 /// </para>
 /// </summary>
-internal sealed class Crowd
+internal sealed class Crowd : IDisposable
 {
     /// <summary>The player's object id.</summary>
     public const uint PlayerId = 0x5000_0001;
@@ -47,7 +49,8 @@ internal sealed class Crowd
     private readonly ObjectMotion[] _motions;
     // Where each creature is registered (a creature that did not move is not moved in the registry).
     private readonly Position[] _registered;
-    private readonly int _threads;
+    private readonly TwoThreads? _worker;
+    private readonly Action<int>? _stepChunks;
     private Position _player;
     private ulong _hash = 14695981039346656037UL;
 
@@ -56,7 +59,6 @@ internal sealed class Crowd
     {
         if (n < 1 || n > 5000) throw new ArgumentOutOfRangeException(nameof(n), n, "1 to 5,000 creatures");
         if (threads < 1 || threads > 2) throw new ArgumentOutOfRangeException(nameof(threads), threads, "1 or 2 threads");
-        _threads = threads;
         _world = SceneLibrary.Load("door").World;
         // A few trees and rocks about the field, fixed seed.
         var rng = new Random(33);
@@ -74,6 +76,11 @@ internal sealed class Crowd
         _world.Objects.Register(PlayerId, cylinder, _player, 1f, PhysicsState.Gravity, ShadowFlags.IsPlayer);
         _engines = new PhysicsEngine[threads];
         for (int t = 0; t < threads; t++) _engines[t] = new PhysicsEngine(_world);
+        if (threads == 2)
+        {
+            _worker = new TwoThreads();
+            _stepChunks = t => StepChunks(_engines[t]);
+        }
         _movers = new MoverDescription[n];
         _states = new MoverState[n];
         _bodies = new BodyState[n];
@@ -124,14 +131,16 @@ internal sealed class Crowd
         // The player's client reported a new position: the server moves it in the registry.
         _player = At(PlayerAt(Ticks));
         _world.Objects.Move(PlayerId, _player);
-        if (_threads == 1)
+        long t0 = Stopwatch.GetTimestamp();
+        if (_worker is null)
             StepRange(_engines[0], 0, _states.Length);
         else
         {
-            int half = _states.Length / 2;
-            Parallel.For(0, 2, new ParallelOptions { MaxDegreeOfParallelism = 2 },
-                t => StepRange(_engines[t], t == 0 ? 0 : half, t == 0 ? half : _states.Length));
+            // Both threads take chunks of creatures in turn from one counter until none is left.
+            _next = 0;
+            _worker.Run(_stepChunks!);
         }
+        StepMs = Stopwatch.GetElapsedTime(t0).TotalMilliseconds;
         // One writer: the creatures that moved, in creature order (the order the cells' lists take).
         for (int i = 0; i < _states.Length; i++)
         {
@@ -144,6 +153,25 @@ internal sealed class Crowd
             Add(p);
         }
         Add(_player);
+    }
+
+    /// <summary>The last tick's step phase (both threads, until both are done), milliseconds.</summary>
+    public double StepMs { get; private set; }
+
+    /// <summary>With two threads, how long each thread stepped creatures in the last tick, milliseconds.</summary>
+    public (double Caller, double Second) Busy => _worker?.Busy ?? (StepMs, 0);
+
+    /// <summary>Stops the second thread.</summary>
+    public void Dispose() => _worker?.Dispose();
+
+    private const int Chunk = 8;
+    private int _next;
+
+    private void StepChunks(PhysicsEngine engine)
+    {
+        int n = _states.Length;
+        for (int from = Interlocked.Add(ref _next, Chunk) - Chunk; from < n; from = Interlocked.Add(ref _next, Chunk) - Chunk)
+            StepRange(engine, from, Math.Min(n, from + Chunk));
     }
 
     private void StepRange(PhysicsEngine engine, int from, int to)
