@@ -3,6 +3,7 @@
 #
 #   bench/compare.sh [--head COMMIT] BASE [PAIRS] [WORKLOAD...]                    wall-clock ratios
 #   bench/compare.sh [--head COMMIT] --callgrind BASE [TRANSITIONS] [WORKLOAD...]  instruction counts
+#   bench/compare.sh [--head COMMIT] --crowd BASE [PAIRS] [CREATURES...]            the crowd's ticks
 #
 # Builds the timing driver (bench/AcDream.Core.Physics.Timing, copied as it is in the work tree) once
 # against BASE's library, in a temporary git worktree, and once against the work tree's library (or,
@@ -24,12 +25,20 @@
 # methods, hot ones included, a second time with MinOpts (no inlining: they call Vector3's operators and
 # span indexers; see docs/performance.md, "The face slide, this round"), so the counts overstate call
 # overhead and understate what inlining saves; the wall-clock ratios decide. Default workloads: head-on
-# and slide-ne.
+# and slide-ne. A workload named crowd-N counts the crowd's ticks instead (N creatures piling onto one
+# player, the driver's `crowd-count N 270 30`: ticks 271-300, while the pile forms), per tick.
+#
+# Crowd: runs the driver's `crowd` command (N creatures, default 200 and 1000, on one thread) on the two builds
+# alternately PAIRS times (default 3) and prints, per creature count and phase, the median over the runs of
+# each build's mean tick, its worst 30-tick mean, and the ratio; and the crowd's fingerprints (every position
+# of every tick) of both builds.
 set -euo pipefail
+crowd=0
 callgrind=0
 head_commit=
 if [ "${1:-}" = "--head" ]; then head_commit=${2:?--head needs a commit}; shift 2; fi
 if [ "${1:-}" = "--callgrind" ]; then callgrind=1; shift; fi
+if [ "${1:-}" = "--crowd" ]; then crowd=1; shift; fi
 base=${1:?usage: bench/compare.sh [--callgrind] BASE [PAIRS | TRANSITIONS] [WORKLOAD...]}
 count=${2:-}
 shift $(( $# < 2 ? $# : 2 ))
@@ -87,7 +96,18 @@ if ((callgrind)); then
   echo "$machine"
   echo "$fingerprints"
   printf '%-14s %12s %12s %7s\n' workload "base Ir" "now Ir" ratio
+  crowd_instructions() { # side creatures -> instructions of ticks 271-300
+    DOTNET_TieredCompilation=0 valgrind --tool=callgrind --dump-before=getpgrp --callgrind-out-file="$tmp/cg" \
+      dotnet "$tmp/out-$1/$dll" crowd-count "$2" 270 30 >/dev/null 2>&1
+    awk '/^totals:/ { print $2 }' "$tmp/cg.2"
+    rm -f "$tmp"/cg*
+  }
   for w in "$@"; do
+    if [[ $w == crowd-* ]]; then
+      x=$(crowd_instructions base "${w#crowd-}"); y=$(crowd_instructions head "${w#crowd-}")
+      awk -v w="$w" -v x="$x" -v y="$y" 'BEGIN { printf "%-14s %12d %12d %7.2f  (per tick, ticks 271-300)\n", w, x / 30, y / 30, x / y }'
+      continue
+    fi
     frames=$(dotnet "$tmp/out-head/$dll" list | awk -v w="$w" '$1 == w { print $2 }')
     [ -n "$frames" ] || { echo "unknown workload '$w'" >&2; exit 2; }
     runs=$(( (transitions + frames - 1) / frames ))
@@ -97,6 +117,35 @@ if ((callgrind)); then
     done
     awk -v w="$w" -v x="${per[base]}" -v y="${per[head]}" 'BEGIN { printf "%-14s %12d %12d %7.2f\n", w, x, y, x / y }'
   done
+  exit 0
+fi
+
+if ((crowd)); then
+  pairs=${count:-3}
+  (($# > 0)) || set -- 200 1000
+  for ((p = 1; p <= pairs; p++)); do
+    if ((p % 2)); then order="base head"; else order="head base"; fi
+    for side in $order; do
+      dotnet "$tmp/out-$side/$dll" crowd --threads 1 "$@" | sed "s/^/$side /" >>"$tmp/results"
+    done
+    echo "pair $p of $pairs done ($(cut -d' ' -f1-3 /proc/loadavg))" >&2
+  done
+  echo "base $(git -C "$root" rev-parse --short "$base"), $head_label; $pairs runs each, median of each run's value, ms per tick"
+  echo "$machine"
+  echo "$fingerprints"
+  awk '$8 == "fingerprint" { fp[$1, $3] = $9 } END { for (k in fp) { split(k, a, SUBSEP); printf "crowd %s creatures, %s: fingerprint %s\n", a[2], a[1], fp[k] } }' "$tmp/results" | sort
+  printf '%-10s %-8s %-10s %9s %9s %7s\n' creatures phase value base now ratio
+  awk '
+    $6 == "forming" || $6 == "settled" { key = $3 " " $6 " mean"; add($1, key, $10) }
+    $6 == "worst" { key = $3 " worst30 mean"; add($1, key, $9) }
+    function add(side, key, v) { n[side, key]++; val[side, key, n[side, key]] = v; if (!(key in seen)) { seen[key] = 1; order[++k] = key } }
+    function median(side, key,   i, j, m, t, a) {
+      m = n[side, key]
+      for (i = 1; i <= m; i++) a[i] = val[side, key, i]
+      for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+      return m % 2 ? a[(m + 1) / 2] : (a[m / 2] + a[m / 2 + 1]) / 2
+    }
+    END { for (i = 1; i <= k; i++) { split(order[i], f, " "); b = median("base", order[i]); h = median("head", order[i]); printf "%-10s %-8s %-10s %9.3f %9.3f %7.2f\n", f[1], f[2], f[3], b, h, b / h } }' "$tmp/results"
   exit 0
 fi
 

@@ -48,6 +48,19 @@ public static class Program
                 return 0;
             case "time":
                 return Time(workloads, args.Skip(1).ToArray());
+            case "crowd-count" when args.Length == 4 && int.TryParse(args[1], out int creatures) && int.TryParse(args[2], out int skip)
+                                    && int.TryParse(args[3], out int counted):
+                var crowd = new Crowd(creatures, 1);
+                for (int i = 0; i < skip; i++)
+                    crowd.Tick();
+                Mark();
+                for (int i = 0; i < counted; i++)
+                    crowd.Tick();
+                Mark();
+                Console.WriteLine($"crowd {creatures}: ticks {skip + 1}-{skip + counted} counted, fingerprint {crowd.Fingerprint:X16}");
+                return 0;
+            case "crowd":
+                return CrowdRun.Run(args.Skip(1).ToArray());
             default:
                 return Usage($"unknown command '{command}'");
         }

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Geometry;
@@ -73,11 +74,33 @@ internal static class ObjectCollisions
         // retail test would return OK and change nothing (see ObjectCull). The cull keeps each candidate's
         // rows, so a cell already listed is walked without reading the registry (a cell with no candidate
         // ends here).
-        foreach (var rows in transition.Cull.CandidateRows(transition, cellId))
+        var candidates = transition.Cull.CandidateRows(transition, cellId, out var reach);
+        if (candidates.Length == 0)
+            return TransitionState.OK;
+        // The cull's region is wide (the rest of the move, a step): in a crowd it holds tens of creatures, and
+        // most lie beyond the check spheres themselves. Each candidate's reach box is therefore tested against
+        // the check spheres' own box first, by the very rule the region is made with, so a candidate it leaves
+        // out is one whose retail tests return OK and change nothing. The box is taken again after every
+        // object actually tested (a step-up from one object moves the check spheres for the next).
+        var path = transition.SpherePath;
+        bool boxValid = false;
+        Vector3 min = default, max = default;
+        for (int i = 0; i < candidates.Length; i++)
         {
-            var state = FindObjectCollisionsUnlessSelf(transition, rows);
+            if (!boxValid)
+            {
+                ObjectCull.SpheresBox(path, out min, out max);
+                var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
+                min += toCell;
+                max += toCell;
+                boxValid = true;
+            }
+            if (!reach[i].Meets(min, max))
+                continue;
+            var state = FindObjectCollisionsUnlessSelf(transition, candidates[i]);
             if (state != TransitionState.OK)
                 return state;
+            boxValid = false;
         }
         return TransitionState.OK;
     }
@@ -199,8 +222,10 @@ internal static class ObjectCollisions
                     return TransitionState.OK;
                 return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
-                // Retail quirk: only the low point follows the object's frame; the axis stays world Z.
-                path.CacheLocalSpaceSphere(row.Position, 1.0f);
+                // Retail quirk: only the low point follows the object's frame; the axis stays world Z. Retail
+                // first sets the path's local space to the object (cache_localspace_sphere(p, 1.0)); of that only
+                // the placement is ever read after a cylinder test (see CacheLocalSpaceForCylinder).
+                path.CacheLocalSpaceForCylinder(row.Position);
                 var cyl = shape.Cylinder;
                 cyl.LowPoint = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
                 return CylSphereCollision.IntersectsSphere(cyl, transition);

@@ -33,6 +33,9 @@ internal sealed class ObjectCull
     // version is the one the lists were made at (a new version drops the lists; an object's rows array is
     // replaced only by re-registering it, which changes the version).
     private ShadowEntry[][] _rows = new ShadowEntry[64][];
+    // Beside each candidate, its reach box in its cell's landblock space (the registry's), for the tight test
+    // before each object (see Reach).
+    private ReachBox[] _reach = new ReachBox[64];
     private int _used;
 
     private int _version = -1;
@@ -61,13 +64,25 @@ internal sealed class ObjectCull
     }
 
     /// <summary>
-    /// The rows of the objects <see cref="Candidates"/> names, in the same order (one array per object):
-    /// the object pass reads this one array. The registry is read only when the cell is not listed yet.
+    /// The rows of the objects <see cref="Candidates"/> names, in the same order (one array per object): the
+    /// object pass reads this one array. The registry is read only when the cell is not listed yet. Beside
+    /// each, <paramref name="reach"/> holds its reach box (in its cell's landblock space, the registry's
+    /// <see cref="ShadowObjectRegistry.CellObjects.Reaches"/> box).
     /// </summary>
-    public ReadOnlySpan<ShadowEntry[]> CandidateRows(Transition transition, uint cellId)
+    public ReadOnlySpan<ShadowEntry[]> CandidateRows(Transition transition, uint cellId, out ReadOnlySpan<ReachBox> reach)
     {
         int k = ListOf(transition, cellId);
+        reach = _reach.AsSpan(_starts[k], _counts[k]);
         return _rows.AsSpan(_starts[k], _counts[k]);
+    }
+
+    /// <summary>An object's reach box (see <see cref="ShadowObjectRegistry.CellObjects.Reaches"/>).</summary>
+    internal readonly record struct ReachBox(Vector3 Min, Vector3 Max)
+    {
+        /// <summary>True when the box meets <paramref name="min"/>..<paramref name="max"/> (the registry's test).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public bool Meets(Vector3 min, Vector3 max) =>
+            Min.X <= max.X && Max.X >= min.X && Min.Y <= max.Y && Max.Y >= min.Y && Min.Z <= max.Z && Max.Z >= min.Z;
     }
 
     /// <summary>Where the cell's list is in <see cref="_cellIds"/>, made first when it is not there.</summary>
@@ -92,7 +107,7 @@ internal sealed class ObjectCull
 
     /// <summary>The check spheres' box, in the landblock space of the check cell.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void SpheresBox(SpherePath path, out Vector3 min, out Vector3 max)
+    internal static void SpheresBox(SpherePath path, out Vector3 min, out Vector3 max)
     {
         min = new Vector3(float.MaxValue);
         max = new Vector3(float.MinValue);
@@ -179,17 +194,25 @@ internal sealed class ObjectCull
         var min = _min + toCell;
         var max = _max + toCell;
         int start = _used;
-        for (int i = 0; i < objects.Count; i++)
+        // The cell's slots read as one span (in a pile of creatures a cell lists hundreds of objects, and every
+        // mover's new region reads them all).
+        var slots = objects.Slots;
+        for (int i = 0; i < slots.Length; i++)
         {
-            if (!objects.Reaches(i, min, max))
+            ref readonly var slot = ref slots[i];
+            if (!(slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
+                && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
+                && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z))
                 continue;
             if (_used == _candidates.Length)
             {
                 Array.Resize(ref _candidates, _used * 2);
                 Array.Resize(ref _rows, _used * 2);
+                Array.Resize(ref _reach, _used * 2);
             }
             _candidates[_used] = i;
-            _rows[_used] = objects.RowArrayOf(i);
+            _rows[_used] = slot.Record.Rows;
+            _reach[_used] = new ReachBox(slot.ReachMin, slot.ReachMax);
             _used++;
         }
         _cellIds[_cells] = cellId;

@@ -333,6 +333,16 @@ internal sealed class SpherePath
         LocalSpaceZ = _spaceMatrix.LocalUp();
     }
 
+    /// <summary>
+    /// What retail's cache_localspace_sphere(p, 1.0) before a cylinder test leaves that anything reads: the
+    /// space's placement (<see cref="LocalSpacePos"/>, which CCylSphere::step_sphere_up turns its normal by).
+    /// The spheres, current centre and up vector it would compute in that space are not computed: every reader
+    /// of them (the BSP queries of a part or a cell, the edge slide's walkable test) prepares its own space first
+    /// with <see cref="CacheLocalSpaceSphere"/>, with no other test in between, so no result changes. In a pile
+    /// of creatures this was a rotation matrix and three transforms per cylinder tested (a fifth of the tick).
+    /// </summary>
+    public void CacheLocalSpaceForCylinder(in Position space) => LocalSpacePos = space;
+
     // Whether a coordinate is +0 (all bits clear).
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool HasPositiveZero(Vector3 v) =>

@@ -391,6 +391,9 @@ public sealed class ShadowObjectRegistry
         /// <summary>How many objects the cell lists.</summary>
         public int Count => _slots?.Count ?? 0;
 
+        /// <summary>The cell's list itself, in order (the object cull scans it).</summary>
+        public ReadOnlySpan<Slot> Slots => CollectionsMarshal.AsSpan(_slots);
+
         /// <summary>The rows (one per shape) of the cell's <paramref name="index"/>-th object.</summary>
         public ReadOnlySpan<ShadowEntry> RowsOf(int index) => RowArrayOf(index);
 
