@@ -33,6 +33,9 @@ public sealed class MotionParityFileTests : IDisposable
                      "motionTable": "0x09000001", "scale": 1, "elasticity": 0.05, "friction": 0.95 },
           "skills": { "run": 200, "jump": 200, "burden": 0, "runRate": 2.375 },
           "start": { "cell": "0xA9B40013", "origin": [60, 60, 0], "orientation": [1, 0, 0, 0] },
+          "world": { "landblock": "0xA9B4, flat terrain at z 0 (all 81 heights index 0)",
+                     "door": "door slab box x -0.5..0.5, y -0.009..0.252, z 0..2.2 (object frame) at landblock-local (100,100,0), identity orientation, static",
+                     "platform": "box x -4..4, y -4..4, z 0..2 (object frame) at landblock-local (60,150,0), identity orientation, static" },
           "frames": [ { "commands": ["RawState.CurrentHoldKey = Run", "{{command}}"], "quantumRan": true, "origin": [60, 60, 0], "cell": "0xA9B40013",
                         "interpreted": { "style": "0x8000003D", "forwardCommand": "0x41000003", "forwardSpeed": 1, "sidestepCommand": "0x00000000",
                                          "sidestepSpeed": 1, "turnCommand": "0x00000000", "turnSpeed": 1 } } ] }
