@@ -8,7 +8,7 @@ internal static class DatPath
     public static PhysicsWorld Through(PhysicsWorld world)
     {
         var dat = WorldDat.From(world);
-        using var files = DatFiles.Write(dat);
+        using var files = WrittenDats.Write(dat);
         return new DatWorldAssembly(files.Portal, files.Cell, dat.LandDefs, (owner, index) => dat.Objects[(owner, index)]).Load(dat.Landblocks);
     }
 

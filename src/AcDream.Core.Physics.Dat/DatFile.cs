@@ -1,0 +1,153 @@
+using System;
+using System.Buffers.Binary;
+using System.IO;
+using System.Reflection;
+using DatReaderWriter;
+using DatReaderWriter.Enums;
+using DatReaderWriter.Lib.Attributes;
+using DatReaderWriter.Lib.IO;
+using DatReaderWriter.Options;
+using DatReaderWriter.Types;
+
+namespace AcDream.Core.Physics.Dat;
+
+/// <summary>
+/// One DAT file opened read-only (other readers, the game client too, may keep it open) with typed reads by id.
+/// The header is checked before DatReaderWriter walks the file: a file that is not a DAT, or the other one of the
+/// two, never reaches its index. Reads are serialised (one at a time per file), so any thread may read.
+/// </summary>
+internal sealed class DatFile : IDisposable
+{
+    /// <summary>The largest object read, bytes (retail's largest physics objects are well under 1 MB).</summary>
+    public const int MaxObjectBytes = 16 * 1024 * 1024;
+
+    // The header's layout (DatHeader.Unpack): a 256-byte version string, 64 bytes of transactions, then the magic,
+    // block size, file size and file type as 32-bit little-endian words.
+    private const int HeaderBytes = 400, MagicOffset = 320, TypeOffset = 332;
+
+    private readonly DatDatabase _database;
+    private readonly object _gate = new();
+
+    private DatFile(string path, string name, DatFileType type, DatDatabase database)
+    {
+        Type = type;
+        Path = path;
+        Name = name;
+        _database = database;
+    }
+
+    /// <summary>Portal or cell.</summary>
+    public DatFileType Type { get; }
+    /// <summary>The file's path as given.</summary>
+    public string Path { get; }
+    /// <summary>The file's name, used in every message.</summary>
+    public string Name { get; }
+
+    /// <summary>Opens a DAT file of the expected type, read-only and shared.</summary>
+    /// <exception cref="DatReadException">The file is missing, unreadable, not a DAT file, or of the other type.</exception>
+    public static DatFile Open(string path, DatFileType expected)
+    {
+        ArgumentNullException.ThrowIfNull(path);
+        string name = System.IO.Path.GetFileName(path);
+        if (!File.Exists(path))
+            throw new DatReadException(name, null, $"does not exist ({path}).");
+        CheckHeader(path, name, expected);
+        try
+        {
+            var database = new DatDatabase(o =>
+            {
+                o.FilePath = path;
+                o.AccessType = DatAccessType.Read;
+                // The adapter caches what it converts; DatReaderWriter's own object cache would hold every raw object too.
+                o.FileCachingStrategy = FileCachingStrategy.Never;
+                o.IndexCachingStrategy = IndexCachingStrategy.OnDemand;
+            });
+            return new DatFile(path, name, expected, database);
+        }
+        catch (Exception ex) when (ex is not OutOfMemoryException)
+        {
+            throw new DatReadException(name, null, $"cannot be opened: {ex.Message}", ex);
+        }
+    }
+
+    private static void CheckHeader(string path, string name, DatFileType expected)
+    {
+        var header = new byte[HeaderBytes];
+        try
+        {
+            using var stream = new FileStream(path, FileMode.Open, FileAccess.Read, FileShare.ReadWrite | FileShare.Delete);
+            if (stream.Length < HeaderBytes)
+                throw new DatReadException(name, null, $"is not a DAT file ({stream.Length} bytes, shorter than its {HeaderBytes}-byte header).");
+            stream.ReadExactly(header);
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException)
+        {
+            throw new DatReadException(name, null, $"cannot be read: {ex.Message}", ex);
+        }
+        int magic = BinaryPrimitives.ReadInt32LittleEndian(header.AsSpan(MagicOffset));
+        if (magic != DatHeader.RETAIL_MAGIC)
+            throw new DatReadException(name, null, $"is not a DAT file (magic 0x{magic:X8}, expected 0x{DatHeader.RETAIL_MAGIC:X8}).");
+        var type = (DatFileType)BinaryPrimitives.ReadUInt32LittleEndian(header.AsSpan(TypeOffset));
+        if (type != expected)
+            throw new DatReadException(name, null, $"is a {Describe(type)} DAT file, expected a {Describe(expected)} DAT file.");
+    }
+
+    private static string Describe(DatFileType type) => type switch
+    {
+        DatFileType.Portal => "portal",
+        DatFileType.Cell => "cell",
+        DatFileType.Local => "local (language)",
+        _ => $"type {(uint)type}",
+    };
+
+    /// <summary>Whether the file holds an object with this id.</summary>
+    public bool Contains(uint id)
+    {
+        lock (_gate)
+            return _database.Tree.TryGetFile(id, out _);
+    }
+
+    /// <summary>Reads the object <paramref name="id"/> as a <typeparamref name="T"/>.</summary>
+    /// <exception cref="DatReadException">The object is absent, its id names another type, it is larger than
+    /// <see cref="MaxObjectBytes"/>, or it cannot be unpacked.</exception>
+    public T Read<T>(uint id) where T : DBObj
+    {
+        var kind = Kind<T>.Attribute;
+        if (kind.DatFileType != Type)
+            throw new ArgumentException($"{typeof(T).Name} is a {Describe(kind.DatFileType)} DAT object; {Name} is the {Describe(Type)} DAT.", nameof(T));
+        lock (_gate)
+        {
+            if (!_database.Tree.TryGetFile(id, out var entry))
+                throw new DatReadException(Name, id, $"is absent (expected a {kind.DBObjType}).");
+            var actual = _database.TypeFromId(id);
+            if (actual != kind.DBObjType)
+                throw new DatReadException(Name, id, $"is a {actual}, not a {kind.DBObjType}.");
+            if (entry.Size > MaxObjectBytes)
+                throw new DatReadException(Name, id, $"is {entry.Size} bytes, more than the {MaxObjectBytes} read.");
+            try
+            {
+                if (_database.TryGet<T>(id, out var value) && value is not null)
+                    return value;
+            }
+            catch (Exception ex) when (ex is not OutOfMemoryException)
+            {
+                throw new DatReadException(Name, id, $"cannot be read as a {kind.DBObjType}: {ex.Message}", ex);
+            }
+            throw new DatReadException(Name, id, $"cannot be read as a {kind.DBObjType}.");
+        }
+    }
+
+    /// <summary>Closes the file.</summary>
+    public void Dispose()
+    {
+        lock (_gate)
+            _database.Dispose();
+    }
+
+    // What DatReaderWriter's generated type says of itself: its file and its object type.
+    private static class Kind<T> where T : DBObj
+    {
+        public static readonly DBObjTypeAttribute Attribute = typeof(T).GetCustomAttribute<DBObjTypeAttribute>()
+            ?? throw new InvalidOperationException($"{typeof(T).Name} is not a DAT object type.");
+    }
+}
