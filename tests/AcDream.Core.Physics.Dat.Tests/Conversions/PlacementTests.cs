@@ -26,7 +26,7 @@ public class PlacementTests
                 new Stab { Id = 0x01000002, Frame = new DatFrame { Origin = new Vector3(195, 10, 0), Orientation = Quaternion.Identity } },
             ],
         };
-        using var files = WrittenDatFiles.Write([], [info]);
+        using var files = WrittenDats.Write([], [info]);
 
         var objects = DatLandblocks.Objects(files.Get<LandBlockInfo>(files.Cell, 0xA9B4FFFE));
 
@@ -40,7 +40,7 @@ public class PlacementTests
     [Fact]
     public void AGfxObjWithoutPhysics_HasNoModel_AndAGfxObjObjectIsOnePart()
     {
-        using var files = WrittenDatFiles.Write([DatObjects.GfxObj(0x01000003, null), DatObjects.GfxObj(0x01000004, BspShapes.Box(Vector3.Zero, Vector3.One))], []);
+        using var files = WrittenDats.Write([DatObjects.GfxObj(0x01000003, null), DatObjects.GfxObj(0x01000004, BspShapes.Box(Vector3.Zero, Vector3.One))], []);
 
         Assert.Null(DatModels.ToPhysicsModel(files.Get<GfxObj>(files.Portal, 0x01000003)));
         var model = DatModels.ToPhysicsModel(files.Get<GfxObj>(files.Portal, 0x01000004));
