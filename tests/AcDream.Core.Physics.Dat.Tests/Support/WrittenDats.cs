@@ -6,15 +6,9 @@ using DatReaderWriter.Options;
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 
 /// <summary>A portal and a cell DAT file written into a temporary folder with DatReaderWriter, then opened read-only.</summary>
-<<<<<<<< HEAD:tests/AcDream.Core.Physics.Dat.Tests/Support/WrittenDats.cs
 internal sealed class WrittenDats : IDisposable
 {
     private WrittenDats(string folder, DatDatabase portal, DatDatabase cell)
-========
-internal sealed class WrittenDats : IDisposable
-{
-    private WrittenDats(string folder, DatDatabase portal, DatDatabase cell)
->>>>>>>> dat-geo:tests/AcDream.Core.Physics.Dat.Tests/Support/WrittenDats.cs
     {
         Folder = folder;
         Portal = portal;
@@ -26,28 +20,17 @@ internal sealed class WrittenDats : IDisposable
     public DatDatabase Cell { get; }
 
     /// <summary>Writes the objects (portal ones: GfxObj, Setup, Environment; cell ones: the rest) and opens both files to read.</summary>
-<<<<<<<< HEAD:tests/AcDream.Core.Physics.Dat.Tests/Support/WrittenDats.cs
     public static WrittenDats Write(IEnumerable<IDBObj> portalObjects, IEnumerable<IDBObj> cellObjects)
-========
-    public static WrittenDats Write(IEnumerable<IDBObj> portalObjects, IEnumerable<IDBObj> cellObjects)
->>>>>>>> dat-geo:tests/AcDream.Core.Physics.Dat.Tests/Support/WrittenDats.cs
     {
         string folder = Path.Combine(Path.GetTempPath(), "acdream-dat-" + Guid.NewGuid().ToString("N"));
         Directory.CreateDirectory(folder);
         string portal = Path.Combine(folder, "client_portal.dat"), cell = Path.Combine(folder, "client_cell_1.dat");
         WriteFile(portal, DatFileType.Portal, portalObjects);
         WriteFile(cell, DatFileType.Cell, cellObjects);
-<<<<<<<< HEAD:tests/AcDream.Core.Physics.Dat.Tests/Support/WrittenDats.cs
         return new WrittenDats(folder, Open(portal), Open(cell));
     }
 
     public static WrittenDats Write(WorldDat world) =>
-========
-        return new WrittenDats(folder, Open(portal), Open(cell));
-    }
-
-    public static WrittenDats Write(WorldDat world) =>
->>>>>>>> dat-geo:tests/AcDream.Core.Physics.Dat.Tests/Support/WrittenDats.cs
         Write(world.GfxObjs.Cast<IDBObj>().Concat(world.Setups).Concat(world.Environments),
             world.LandBlocks.Cast<IDBObj>().Concat(world.Infos).Concat(world.EnvCells));
 
