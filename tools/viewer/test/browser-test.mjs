@@ -258,6 +258,8 @@ try {
     check(wall >= 0, 'cottage-10000: no frame meets the shell');
     const inferred = await p.evaluate((f) => { window.acdreamView.setFrame(f); return document.querySelector('#panel td[data-field="inferredHit"]')?.textContent ?? ''; }, wall);
     check(/^[1-9]\d* lit /.test(inferred), `cottage-10000: frame ${wall} against the shell lights no polygon ("${inferred}")`);
+    await p.evaluate(() => window.acdreamView.renderNow());
+    await p.screenshot({ path: join(out, 'cottage-wall.png') });
     check(errors.length === 0, `cottage-10000: console errors: ${errors.join(' | ')}`);
     speed = { wallMs, readyMs, cpuMs, pictureMs, p50, p95 };
     await p.close();
