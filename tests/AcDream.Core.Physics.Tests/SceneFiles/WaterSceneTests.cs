@@ -115,20 +115,6 @@ public class WaterSceneTests
         Assert.False(last.ContactPlaneIsWater);
     }
 
-    [Fact]
-    public void TheStatesAreTheRunnersFrames()
-    {
-        // The states read here are the ones the scene runner records (same positions, frame for frame).
-        var scene = SceneLibrary.Load("water-walk");
-        var trajectory = SceneRunner.Run(scene);
-        foreach (var mover in trajectory.Movers)
-        {
-            var states = States(SceneLibrary.Load("water-walk"), mover.Name);
-            for (int f = 0; f < states.Count; f++)
-                Assert.Equal(mover.Frames[f].Position, states[f].Position.Origin);
-        }
-    }
-
     // ---- the scene format's terrain types ----------------------------------------------------------------
 
     private const string Land = """
