@@ -322,28 +322,61 @@ public static class SceneLoader
             if (id > 0xFFFF)
                 throw new SceneFormatException(o.Child("id"), $"0x{id:X} is not a 16-bit landblock id.");
             Checked(o.Child("id"), () => Guard.LandblockInWorld(id, o.Child("id")));
-            Terrain terrain;
+            const int vertices = Terrain.VerticesPerSide * Terrain.VerticesPerSide;
             if (o.Has("height") == o.Has("heights"))
                 throw new SceneFormatException(path, "a landblock needs exactly one of \"height\" (flat) or \"heights\" (81 values, [x * 9 + y]).");
+            var heights = new float[vertices];
             if (o.Opt("height") is { } h)
             {
                 float height = JsonRead.Float(h, o.Child("height"));
                 Checked(o.Child("height"), () => Guard.Coordinate(height, o.Child("height")));
-                terrain = Terrain.Flat(id, height);
+                Array.Fill(heights, height);
             }
             else
             {
                 var items = o.Array("heights");
-                if (items.Count != Terrain.VerticesPerSide * Terrain.VerticesPerSide)
+                if (items.Count != vertices)
                     throw new SceneFormatException(o.Child("heights"), $"expected 81 values (9×9), got {items.Count}.");
-                var heights = new float[items.Count];
                 for (int i = 0; i < items.Count; i++)
                     heights[i] = JsonRead.Float(items[i].Value, items[i].Path);
-                terrain = Checked(path, () => new Terrain(id, heights, path));
             }
+            var words = ReadTerrainTypes(o, path);
             o.End();
+            var terrain = Checked(path, () => new Terrain(id, heights, words, path));
             Checked(o.Child("id"), () => _world.Cells.AddLandblock(terrain));
             _landblocks.Add(id);
+        }
+
+        // The terrain words of a landblock from its terrain types (bits 2–6 of each word; road and scenery, which
+        // physics never reads, stay 0): "terrainType" one type for every vertex, or "terrainTypes" 81 of them,
+        // [x * 9 + y]; neither: type 0 everywhere (dry).
+        private static ushort[] ReadTerrainTypes(JsonObj o, string path)
+        {
+            const int vertices = Terrain.VerticesPerSide * Terrain.VerticesPerSide;
+            var words = new ushort[vertices];
+            if (o.Has("terrainType") && o.Has("terrainTypes"))
+                throw new SceneFormatException(path, "a landblock takes at most one of \"terrainType\" (every vertex) or \"terrainTypes\" (81 values, [x * 9 + y]).");
+            if (o.Opt("terrainType") is { } t)
+            {
+                Array.Fill(words, TerrainWord(t, o.Child("terrainType")));
+            }
+            else if (o.Opt("terrainTypes") is { } ts)
+            {
+                var items = JsonRead.Array(ts, o.Child("terrainTypes"));
+                if (items.Count != vertices)
+                    throw new SceneFormatException(o.Child("terrainTypes"), $"expected 81 terrain types (9×9), got {items.Count}.");
+                for (int i = 0; i < items.Count; i++)
+                    words[i] = TerrainWord(items[i].Value, items[i].Path);
+            }
+            return words;
+        }
+
+        private static ushort TerrainWord(JsonElement e, string path)
+        {
+            int type = JsonRead.Int(e, path);
+            if (type < 0 || type > 31)
+                throw new SceneFormatException(path, $"a terrain type is 0..31, got {type}.");
+            return (ushort)(type << 2);
         }
 
         private void ReadEnvCell(JsonElement e, string path, List<(CellPortal, string)> pending, List<EnvCell> cells)

@@ -183,6 +183,7 @@ public class BadInputTests
         ["TR2"] = new("Terrain()", "a height NaN", "terrain.heights[5]", _ => { var h = new float[81]; h[5] = float.NaN; new Terrain(1, h); }),
         ["TR3"] = new("Terrain()", "a height beyond ±100 km", "terrain.heights[80]", _ => { var h = new float[81]; h[80] = -1e30f; new Terrain(1, h); }),
         ["TR4"] = new("Terrain()", "landblock above 0xFFFF", "terrain.landblock", _ => new Terrain(0x10000, new float[81])),
+        ["TR5"] = new("Terrain()", "80 terrain words", "dat 0xA9B4FFFF.terrain", _ => new Terrain(0xA9B4, new float[81], new ushort[80], "dat 0xA9B4FFFF")),
         // CellGraph / EnvCell / Building
         ["W01"] = new("CellGraph.AddLandblock", "terrain null", "terrain", f => f.World.Cells.AddLandblock(null!)),
         ["W02"] = new("CellGraph.AddLandblock", "landblock already added", "landblock 0xA9B4", f => f.World.Cells.AddLandblock(Terrain.Flat(TestGeometry.Landblock, 5f))),
