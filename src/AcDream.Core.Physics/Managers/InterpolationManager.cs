@@ -73,7 +73,7 @@ internal sealed class InterpolationManager
             {
                 if (!keepHeading)
                 {
-                    setHeading = Headings.ManagersForm.Of(p.Frame);
+                    setHeading = Headings.Of(p.Frame);
                     StopInterpolating();
                     return true;
                 }
@@ -151,7 +151,7 @@ internal sealed class InterpolationManager
         if (distance > step)
             adjustment.Origin *= step / distance;
         if (_keepHeading)
-            adjustment.Orientation = Headings.ManagersForm.Yaw(0f);
+            adjustment.Orientation = Headings.Facing(0f);
         offset = adjustment;
     }
 
@@ -203,7 +203,7 @@ internal sealed class InterpolationManager
     {
         var node = p;
         if (_keepHeading)
-            node.Frame.Orientation = Headings.ManagersForm.Yaw(Headings.ManagersForm.Of(obj.Position.Frame));
+            node.Frame.Orientation = Headings.Facing(Headings.Of(obj.Position.Frame));
         _queue[(_head + _count) % MaxNodes] = node;
         _count++;
     }

@@ -72,7 +72,7 @@ public sealed class PositionManager
         var p = CheckedPosition(position, nameof(position));
         _interpolation ??= new InterpolationManager();
         if (_interpolation.InterpolateTo(p, keepHeading, View(mover, state), out float heading))
-            state.Position.Frame.Orientation = Headings.ManagersForm.Yaw(heading);
+            state.Position.Frame.Orientation = Headings.Facing(heading);
     }
 
     /// <summary>CPhysicsObj::StopInterpolating: the queue is emptied and the progress state reset.</summary>

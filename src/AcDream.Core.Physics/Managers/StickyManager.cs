@@ -96,11 +96,11 @@ internal sealed class StickyManager
         if (step >= MathF.Abs(gap))
             step = gap; // the whole gap (negative: backs away to it)
         offset.Origin = new Vector3(way.X * step, way.Y * step, way.Z * step);
-        float turn = Headings.ManagersForm.Towards(me, target) - Headings.ManagersForm.Of(me.Frame);
+        float turn = Headings.Towards(me, target) - Headings.Of(me.Frame);
         if (MathF.Abs(turn) < PhysicsConstants.Epsilon)
             turn = 0f;
         if (-PhysicsConstants.Epsilon > turn)
             turn += 360f;
-        offset.Orientation = Headings.ManagersForm.Yaw(turn);
+        offset.Orientation = Headings.Facing(turn);
     }
 }

@@ -124,40 +124,4 @@ public static class Headings
 
     /// <summary>Position::distance: the distance between the positions' origins (across landblocks), as a float (one formula: <see cref="Managers.Distances.Between"/>).</summary>
     internal static float Distance(in Position a, in Position b) => (float)Managers.Distances.Between(a, b);
-
-    /// <summary>
-    /// The position managers' form of the same three functions (StickyManager, InterpolationManager, PositionManager).
-    /// They compute the same headings and turns but round differently in the last bit: atan2 is rounded to float
-    /// before the degrees, a direction is normalized by division in double, and set_heading takes the half angle
-    /// directly instead of going through the direction and back. The managers' recorded data (the sticky-melee
-    /// and remote-smoothing hashes) were made with this form; moving the managers to the functions above changes
-    /// sticky-melee at frame 11 by about 1e-7 in a rotation component, so the switch waits for a re-recording.
-    /// </summary>
-    internal static class ManagersForm
-    {
-        // atan2 taken in float (PortableMath's float overload), then the same degrees.
-        private static double OfDirection(float x, float y) => FromAtan2(PortableMath.Atan2(y, x));
-
-        /// <summary>Frame::get_heading (see <see cref="Headings.Of(in Frame)"/>), atan2 rounded to float.</summary>
-        public static float Of(in Frame frame)
-        {
-            var forward = Forward(frame);
-            return (float)OfDirection(forward.X, forward.Y);
-        }
-
-        /// <summary>Position::heading (see <see cref="Headings.Towards"/>), the direction divided by its length in double.</summary>
-        public static float Towards(in Position from, in Position to)
-        {
-            if (!Horizontal(from, to, out var d, out double length))
-                return 0f;
-            return (float)OfDirection((float)(d.X / length), (float)(d.Y / length));
-        }
-
-        /// <summary>Frame::set_heading for an upright frame (see <see cref="Headings.Facing"/>): a turn of −degrees about Z.</summary>
-        public static Quaternion Yaw(float degrees)
-        {
-            double half = -degrees * RadiansPerDegree * 0.5;
-            return new Quaternion(0f, 0f, (float)PortableMath.Sin(half), (float)PortableMath.Cos(half));
-        }
-    }
 }

@@ -62,7 +62,7 @@ public class InterpolationTests
         var rig = new ManagerRig(100f, 84f);
         rig.InterpolateTo(100f, 90f);
         var here = ManagerRig.At(100.03f, 84f);
-        here.Frame.Orientation = Headings.ManagersForm.Yaw(90f);
+        here.Frame.Orientation = Headings.Facing(90f);
         rig.Manager.InterpolateTo(here, false, rig.Mover, ref rig.State);
         Assert.False(rig.Manager.IsInterpolating);
         Assert.Equal(90f, rig.Heading, 3);
@@ -247,9 +247,9 @@ public class InterpolationTests
     {
         var rig = new ManagerRig(100f, 84f);
         var p = ManagerRig.At(104f, 84f);
-        p.Frame.Orientation = Headings.ManagersForm.Yaw(200f);
+        p.Frame.Orientation = Headings.Facing(200f);
         rig.Manager.InterpolateTo(p, true, rig.Mover, ref rig.State);
-        AssertHeading(0f, Headings.ManagersForm.Of(rig.Manager.QueuedPosition(0).Frame));
+        AssertHeading(0f, Headings.Of(rig.Manager.QueuedPosition(0).Frame));
         rig.Frames(3);
         AssertHeading(0f, rig.Heading);
         var other = new ManagerRig(100f, 84f);

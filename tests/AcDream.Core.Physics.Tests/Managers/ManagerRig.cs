@@ -68,5 +68,5 @@ internal sealed class ManagerRig
     public Vector3 Origin => State.Position.Frame.Origin;
 
     /// <summary>The compass heading, degrees (0 = +Y, 90 = +X).</summary>
-    public float Heading => Headings.ManagersForm.Of(State.Position.Frame);
+    public float Heading => Headings.Of(State.Position.Frame);
 }
