@@ -483,7 +483,7 @@ internal sealed class MotionTableManager
     private void SubtractMotion(MotionData data, float speed) => _sequence.SubtractPhysics(data.Velocity * speed, data.Omega * speed);
 
     // CMTable.c:66-84 same_sign: zero counts as positive (ACE's Math.Sign gives zero a sign of its own).
-    private static bool SameSign(float a, float b) => a >= 0f == b >= 0f;
+    internal static bool SameSign(float a, float b) => a >= 0f == b >= 0f;
 
     private static int AnimCount(MotionData? data) => data is null ? 0 : data.Anims.Length;
 }
