@@ -182,6 +182,52 @@ internal sealed class ObjectCull
         return MathF.Min(move, 100f) + MathF.Max(mover.StepUpHeight, mover.StepDownHeight) + 0.5f;
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void AddIfReaches(ReadOnlySpan<ShadowObjectRegistry.Slot> slots, int i, Vector3 min, Vector3 max)
+    {
+        ref readonly var slot = ref slots[i];
+        if (!(slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
+            && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
+            && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z))
+            return;
+        if (_used == _candidates.Length)
+        {
+            Array.Resize(ref _candidates, _used * 2);
+            Array.Resize(ref _rows, _used * 2);
+            Array.Resize(ref _reach, _used * 2);
+        }
+        _candidates[_used] = i;
+        _rows[_used] = slot.Record.Rows;
+        _reach[_used] = new ReachBox(slot.ReachMin, slot.ReachMax);
+        _used++;
+    }
+
+    // The crowded cells' indexes this engine keeps (a pile spans a few cells), replaced in turn.
+    private readonly CellObjectIndex?[] _indexes = new CellObjectIndex?[8];
+    private int _nextIndex;
+    private int[] _found = new int[64];
+
+    /// <summary>The index of a crowded cell at the registry's current version, built when it is not kept.</summary>
+    private CellObjectIndex IndexOf(uint cellId, ReadOnlySpan<ShadowObjectRegistry.Slot> slots)
+    {
+        CellObjectIndex? index = null;
+        foreach (var kept in _indexes)
+            if (kept is not null && kept.CellId == cellId)
+            {
+                index = kept;
+                break;
+            }
+        if (index is null)
+        {
+            index = _indexes[_nextIndex] ??= new CellObjectIndex();
+            _nextIndex = (_nextIndex + 1) % _indexes.Length;
+        }
+        else if (index.Version == _version)
+            return index;
+        index.Build(cellId, _version, slots);
+        return index;
+    }
+
     private int List(uint cellId, in ShadowObjectRegistry.CellObjects objects)
     {
         if (_cells == _cellIds.Length)
@@ -194,26 +240,22 @@ internal sealed class ObjectCull
         var min = _min + toCell;
         var max = _max + toCell;
         int start = _used;
-        // The cell's slots read as one span (in a pile of creatures a cell lists hundreds of objects, and every
-        // mover's new region reads them all).
         var slots = objects.Slots;
-        for (int i = 0; i < slots.Length; i++)
+        if (slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X) && float.IsFinite(max.X))
         {
-            ref readonly var slot = ref slots[i];
-            if (!(slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
-                && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
-                && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z))
-                continue;
-            if (_used == _candidates.Length)
-            {
-                Array.Resize(ref _candidates, _used * 2);
-                Array.Resize(ref _rows, _used * 2);
-                Array.Resize(ref _reach, _used * 2);
-            }
-            _candidates[_used] = i;
-            _rows[_used] = slot.Record.Rows;
-            _reach[_used] = new ReachBox(slot.ReachMin, slot.ReachMax);
-            _used++;
+            // A crowded cell: only the objects its index names are tested, in the cell's order (see CellObjectIndex).
+            var index = IndexOf(cellId, slots);
+            if (_found.Length < slots.Length)
+                _found = new int[slots.Length * 2];
+            int n = index.MayMeet(min.X, max.X, _found);
+            for (int j = 0; j < n; j++)
+                AddIfReaches(slots, _found[j], min, max);
+        }
+        else
+        {
+            // The cell's slots read as one span.
+            for (int i = 0; i < slots.Length; i++)
+                AddIfReaches(slots, i, min, max);
         }
         _cellIds[_cells] = cellId;
         _starts[_cells] = start;
