@@ -12,8 +12,9 @@ public static class DatTerrain
     /// The landblock's terrain: each of the 81 vertex heights (<c>Height[i]</c>, an index into the Region's
     /// <c>LandDefs.LandHeightTable</c> of 256 metres, retail <c>LandDefs::land_height_table</c>) at the same index,
     /// <c>i = x * 9 + y</c> (x east, y north). The cut of each land cell is computed by the runtime from the
-    /// cell's global coordinates, as retail does. The per-vertex terrain words (<c>Terrain[i]</c>: road, terrain
-    /// type, scenery) are not read here: the runtime's terrain carries heights only.
+    /// cell's global coordinates, as retail does. The per-vertex terrain words (<c>Terrain[i]</c>, a
+    /// <c>TerrainInfo</c>: road bits 0–1, terrain type 2–6, scenery 11–15) go to the terrain as stored, same index:
+    /// the runtime reads the type, which makes land cells water (retail <c>CLandBlockStruct::CalcWater</c>).
     /// </summary>
     /// <param name="block">The LandBlock as read (id 0xXXYYFFFF).</param>
     /// <param name="landDefs">The Region's (portal DAT 0x13000000) <c>LandDefs</c>.</param>
@@ -31,14 +32,18 @@ public static class DatTerrain
         var table = landDefs.LandHeightTable;
         if (table is not { Length: 256 })
             throw new DatObjectException(0x1300_0000, $"landDefs.landHeightTable: expected 256 heights, got {table?.Length ?? 0}.");
+        if (block.Terrain is not { Length: count })
+            throw new DatObjectException(id, $"terrain: expected {count} terrain words (9×9), got {block.Terrain?.Length ?? 0}.");
         Span<float> heights = stackalloc float[count];
+        Span<ushort> words = stackalloc ushort[count];
         for (int i = 0; i < count; i++)
+        {
             heights[i] = table[block.Height[i]];
-        // Terrain types (block.Terrain[i]) are where water comes from: they join here when the runtime's
-        // terrain takes them.
+            words[i] = block.Terrain[i];
+        }
         try
         {
-            return new Terrain(id >> 16, heights, $"LandBlock 0x{id:X8}");
+            return new Terrain(id >> 16, heights, words, $"LandBlock 0x{id:X8}");
         }
         catch (ArgumentException ex)
         {

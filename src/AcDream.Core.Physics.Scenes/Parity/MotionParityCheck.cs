@@ -103,6 +103,8 @@ internal static class MotionParityCheck
                 return Name(motion.DoMotion(call.Motion, new MotionParameters(call.Speed, call.Hold), mover, ref state, ref body));
             case MotionCallKind.StopMotion:
                 return Name(motion.StopMotion(call.Motion, new MotionParameters(call.Speed, call.Hold), mover, ref state, ref body));
+            case MotionCallKind.StopCompletely:
+                return Name(motion.StopCompletely(mover, ref state, ref body));
             default:
                 var charge = motion.ChargeJump(mover, state, body);
                 if (charge != MotionError.None)

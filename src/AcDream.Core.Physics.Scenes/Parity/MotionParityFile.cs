@@ -13,6 +13,8 @@ internal enum MotionCallKind
     StopMotion,
     /// <summary>charge_jump then jump(extent, stamina).</summary>
     Jump,
+    /// <summary>PhysicsObj.StopCompletely(false): the interpreter's StopCompletely (Ready, no sidestep, no turn).</summary>
+    StopCompletely,
 }
 
 /// <summary>One call: what, the motion, speed, hold key, the jump's extent and stamina, and the reference's result ("None" or an error name).</summary>

@@ -15,8 +15,8 @@ namespace AcDream.Core.Physics.Parity;
 /// Reads an "ace-motion-parity" file (ACE's motion layer recorded quantum by quantum on the synthetic humanoid
 /// table; described in the reference data's README): the table file it names beside it, the mover (the retail
 /// player's spheres with the file's step heights, state, friction and elasticity), the skills, the start, and
-/// per frame the calls made and the state after. The world is the one every such file names: landblock 0xA9B4
-/// flat at z 0, a door slab box at (100, 100, 0) and an 8 × 8 × 2 m platform box at (60, 150, 0). Errors are
+/// per frame the calls made and the state after. The world is built from the file's "world" object, element by
+/// element (<see cref="RecordedWorld"/>: an element it does not know is refused, never ignored). Errors are
 /// <see cref="SceneFormatException"/>s naming the JSON path. Load-time only.
 /// </summary>
 internal static class MotionParityReader
@@ -32,6 +32,8 @@ internal static class MotionParityReader
     public static MotionParityFile Read(JsonElement root, string name, string directory)
     {
         var o = new JsonObj(root, string.Empty);
+        // Read by ParityReader (format, version) or words for a reader (the rest; "events" repeats the frames' calls).
+        Informational(o, "format", "version", "ace", "name", "description", "scheduling", "events");
         var table = ReadTable(o, directory);
         double rate = ReadRate(o);
 
@@ -53,11 +55,13 @@ internal static class MotionParityReader
         {
             throw SceneFormatException.Wrap("mover", ex);
         }
+        Informational(m, "state");
         var body = BodyState.Creature();
         body.SetElasticity(m.Float("elasticity"));
         body.Friction = m.Float("friction");
         if (!(body.Friction >= 0f && body.Friction <= 1f))
             throw new SceneFormatException(m.Child("friction"), $"must be 0 to 1, got {body.Friction}.");
+        m.End();
 
         var k = o.Obj("skills");
         RetailSkills skills;
@@ -71,15 +75,22 @@ internal static class MotionParityReader
         }
         if (k.Opt("runRate") is { } rr && MathF.Abs(JsonRead.Float(rr, k.Child("runRate")) - RetailSkills.RunRate(skills.RunSkill, skills.Burden)) > 1e-5f)
             throw new SceneFormatException(k.Child("runRate"), $"disagrees with the retail run rate {RetailSkills.RunRate(skills.RunSkill, skills.Burden)} at Run {skills.RunSkill}.");
+        // The stamina is the recording's (every jump's cost is logged with the call).
+        Informational(k, "stamina");
+        k.End();
 
         var s = o.Obj("start");
         uint cell = s.Id("cell");
         var origin = s.Vec3("origin");
         var orientation = JsonRead.Rotation(s.Req("orientation"), s.Child("orientation"));
-        var world = World();
+        var world = RecordedWorld.FromMotionFile(o.Obj("world"));
         if (world.Cells.Get(cell) is null || LandDefs.LandCellAt(0xA9B4, origin) != cell)
             throw new SceneFormatException(s.Child("cell"), $"0x{cell:X8} is not the landblock 0xA9B4 cell of {origin}.");
         var start = MoverState.OnFloor(new Position(cell, new Frame(origin, orientation)), 0f);
+        // The heading repeats the orientation; the contact sentence and retailHoldKey describe what the calls and the
+        // placement do.
+        Informational(s, "headingDeg", "contact", "retailHoldKey");
+        s.End();
 
         var items = o.Array("frames");
         if (items.Count == 0 || items.Count > SceneLoader.MaxFramesPerMover)
@@ -87,6 +98,7 @@ internal static class MotionParityReader
         var frames = new MotionParityFrame[items.Count];
         for (int i = 0; i < frames.Length; i++)
             frames[i] = ReadFrame(items[i].Value, items[i].Path);
+        o.End();
         return new MotionParityFile(name, world, mover, table, skills, start, body, 1.0 / rate, frames);
     }
 
@@ -140,9 +152,17 @@ internal static class MotionParityReader
             TurnCommand = i.Id("turnCommand"),
             TurnSpeed = i.Float("turnSpeed"),
         };
+        i.End();
         MotionSequenceState? sequence = f.Has("motionState") && f.Has("sequence") ? ReadSequence(f.Obj("motionState"), f.Obj("sequence")) : null;
-        return new MotionParityFrame([.. calls], f.Bool("quantumRan", true), f.Vec3("origin"), f.Id("cell"), f.Bool("contact", false),
+        if (sequence is null && (f.Has("motionState") || f.Has("sequence")))
+            throw new SceneFormatException(f.Child(f.Has("sequence") ? "motionState" : "sequence"), "is required beside the other (the motion state and the sequence are compared together).");
+        // Not compared: the frame's index and time (the schedule is the file's rate), the quantum's length (the
+        // schedule's), the orientation, the physics velocity and the transient bits (contact and walkable are).
+        Informational(f, "frame", "t", "quantum", "orientation", "velocity", "sliding", "transientState");
+        var frame = new MotionParityFrame([.. calls], f.Bool("quantumRan", true), f.Vec3("origin"), f.Id("cell"), f.Bool("contact", false),
             f.Bool("onWalkable", false), interpreted, sequence);
+        f.End();
+        return frame;
     }
 
     private static MotionSequenceState ReadSequence(JsonObj m, JsonObj q)
@@ -155,6 +175,7 @@ internal static class MotionParityReader
         {
             var o = new JsonObj(mods[i].Value, mods[i].Path);
             modifiers[i] = new MotionAndSpeed(o.Id("id"), o.Float("speed"));
+            o.End();
         }
         var items = q.Array("anims", optional: true);
         if (items.Count > MaxCallsPerFrame)
@@ -173,14 +194,25 @@ internal static class MotionParityReader
             if (cyclic && firstCyclic < 0)
                 firstCyclic = i;
         }
-        return new MotionSequenceState(m.Id("style"), m.Id("substate"), m.Float("substateMod"), modifiers, q.Vec3("velocity"), q.Vec3("omega"),
+        var state = new MotionSequenceState(m.Id("style"), m.Id("substate"), m.Float("substateMod"), modifiers, q.Vec3("velocity"), q.Vec3("omega"),
             q.Id("currAnim"), q.Float("currFramerate"), JsonRead.Double(q.Req("frameNumber"), q.Child("frameNumber")), anims, firstCyclic);
+        m.End();
+        q.End();
+        return state;
+    }
+
+    /// <summary>Fields a reader accepts without comparing them (descriptions, and state the check does not compare); each is named at its call.</summary>
+    internal static void Informational(JsonObj o, params string[] names)
+    {
+        foreach (string name in names)
+            o.Opt(name);
     }
 
     // The calls as the recording logs them:
     //   "RawState.CurrentHoldKey = Run"
     //   "DoMotion(0x45000005, speed 1, hold Run) -> None"
     //   "StopMotion(0x45000005, hold Run) -> None"
+    //   "PhysicsObj.StopCompletely(false) -> None"
     //   "charge_jump() -> 0; jump(extent 0.5, stamina 4) -> None"
     private static void ParseCall(string text, string path, List<MotionCall> calls)
     {
@@ -217,6 +249,12 @@ internal static class MotionParityReader
             calls.Add(new MotionCall(stop ? MotionCallKind.StopMotion : MotionCallKind.DoMotion, motion, speed, hold, 0f, 0, expected));
             return;
         }
+        if (text == "PhysicsObj.StopCompletely(false)" || text.StartsWith("PhysicsObj.StopCompletely(false) -> ", StringComparison.Ordinal))
+        {
+            // ACE's PhysicsObj.StopCompletely → MovementManager.PerformMovement(StopCompletely) → MotionInterp.StopCompletely.
+            calls.Add(new MotionCall(MotionCallKind.StopCompletely, 0, 1f, HoldKey.Invalid, 0f, 0, expected));
+            return;
+        }
         if (text.StartsWith("charge_jump()", StringComparison.Ordinal))
         {
             int j = text.IndexOf("jump(extent ", StringComparison.Ordinal);
@@ -229,7 +267,7 @@ internal static class MotionParityReader
             calls.Add(new MotionCall(MotionCallKind.Jump, 0, 1f, HoldKey.Invalid, extent, stamina, expected));
             return;
         }
-        throw new SceneFormatException(path, $"unknown call \"{text}\" (known: RawState.CurrentHoldKey = Run, DoMotion(...), StopMotion(...), charge_jump(); jump(...)).");
+        throw new SceneFormatException(path, $"unknown call \"{text}\" (known: RawState.CurrentHoldKey = Run, DoMotion(...), StopMotion(...), PhysicsObj.StopCompletely(false), charge_jump(); jump(...)).");
     }
 
     private static uint Hex(string s, string path, string text) =>
@@ -237,33 +275,6 @@ internal static class MotionParityReader
             ? v
             : throw new SceneFormatException(path, $"expected a hex motion id in \"{text}\".");
 
-    // The world every motion and manager parity file names (its "world" object describes it in words): flat landblock
-    // 0xA9B4 and its north neighbour 0xA9B5 (the interpolate files' 150 m update), the door slab box and the platform
-    // box, both static (a scene needs a mover; this one is not used).
-    private const string WorldScene = """
-        {
-          "version": 1,
-          "name": "ace-motion world",
-          "models": {
-            "doorSlab": { "box": { "min": [-0.5, -0.009, 0], "max": [0.5, 0.252, 2.2] } },
-            "platform": { "box": { "min": [-4, -4, 0], "max": [4, 4, 2] } }
-          },
-          "setups": {
-            "door": { "parts": [{ "model": "doorSlab" }] },
-            "platform": { "parts": [{ "model": "platform" }] },
-            "player": { "spheres": [{ "center": [0, 0, 0.475], "radius": 0.48 }, { "center": [0, 0, 1.35], "radius": 0.48 }], "stepUpHeight": 0.6, "stepDownHeight": 0.04 }
-          },
-          "landblocks": [{ "id": "0xA9B4", "height": 0 }, { "id": "0xA9B5", "height": 0 }],
-          "objects": [
-            { "id": "0x7000_0001", "setup": "door", "cell": "0xA9B40025", "position": [100, 100, 0], "state": "0x10001" },
-            { "id": "0x7000_0002", "setup": "platform", "cell": "0xA9B40017", "position": [60, 150, 0], "state": "0x10001" }
-          ],
-          "movers": [{ "name": "unused", "setup": "player", "state": ["Gravity"], "cell": "0xA9B40013", "position": [60, 60, 0], "floorZ": 0, "motion": [{ "offset": [0, 0, 0], "count": 1 }] }]
-        }
-        """;
-
-    private static PhysicsWorld World() => SceneLoader.Load(WorldScene, "ace-motion world").World;
-
-    /// <summary>The same world for the manager parity files (ManagerParityReader, PositionManagerParityReader); the tree they list stands far from the compared paths.</summary>
-    internal static PhysicsWorld SharedWorld() => World();
+    /// <summary>The world of the manager parity files (ManagerParityReader, PositionManagerParityReader): the recorded door, platform and tree.</summary>
+    internal static PhysicsWorld SharedWorld() => RecordedWorld.Managers();
 }

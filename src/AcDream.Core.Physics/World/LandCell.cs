@@ -19,6 +19,12 @@ public sealed class LandCell : Cell
     // The cell's square, landblock-local: west and south edges (LandDefs.LandCellCorner), east and north
     // (those plus the cell length, in float as before).
     private readonly float _west, _south, _east, _north;
+    // Water (docs/water.md): the cell's type, whether its whole landblock is water, and for a partly-water
+    // cell the depth at each corner as calc_water_depth answers it (0.45 water, 0.1 solid), with the centre
+    // lines that pick the corner.
+    private readonly bool _blockEntirelyWater;
+    private readonly float _centreX, _centreY;
+    private readonly float _depthSW, _depthSE, _depthNW, _depthNE;
 
     /// <summary>Creates land cell <paramref name="id"/> from its landblock's terrain.</summary>
     internal LandCell(uint id, Terrain terrain) : base(id)
@@ -35,6 +41,48 @@ public sealed class LandCell : Cell
         var corner = LandDefs.LandCellCorner(id);
         (_west, _south) = (corner.X, corner.Y);
         (_east, _north) = (corner.X + PhysicsConstants.LandCellLength, corner.Y + PhysicsConstants.LandCellLength);
+        WaterType = terrain.CellWaterType(x, y);
+        _blockEntirelyWater = terrain.WaterType == WaterType.EntirelyWater;
+        // CLandBlock::get_terrain's centre line, ((double)x + x + 1) * (24 * 0.5): 24 x + 12, exact in float.
+        _centreX = (2 * x + 1) * (PhysicsConstants.LandCellLength * 0.5f);
+        _centreY = (2 * y + 1) * (PhysicsConstants.LandCellLength * 0.5f);
+        _depthSW = CornerDepth(terrain, x, y);
+        _depthSE = CornerDepth(terrain, x + 1, y);
+        _depthNW = CornerDepth(terrain, x, y + 1);
+        _depthNE = CornerDepth(terrain, x + 1, y + 1);
+    }
+
+    // calc_water_depth's answer for a corner (acclient.c:353645): 0.44999999 (0.45f) when its terrain type is
+    // water, 0.1 when it is solid.
+    private static float CornerDepth(Terrain terrain, int x, int y) => terrain.IsWaterAt(x, y) ? 0.45f : 0.1f;
+
+    /// <summary>
+    /// How much of the cell is water (retail CObjCell::water_type): from its four corners' terrain types
+    /// (<see cref="Terrain.CellWaterType"/>). A mover standing here sinks <see cref="WaterDepth"/> into the
+    /// ground and its contact plane is water (docs/water.md).
+    /// </summary>
+    public WaterType WaterType { get; }
+
+    /// <summary>
+    /// Retail CObjCell::get_water_depth (acclient.c:347232) at a landblock-local point of this cell: 0 when the
+    /// cell is dry, 0.9 (0.89999998f) when it is entirely water, and for a partly-water cell
+    /// CLandBlockStruct::calc_water_depth (acclient.c:353645): 0.45 when the corner on the point's side of the
+    /// cell's centre lines is water, 0.1 when it is solid. A point on a centre line takes the west (south)
+    /// corner, as CLandBlock::get_terrain's kept comparison <c>(2x + 1) · 12 &gt;= X</c> (acclient.c:352030)
+    /// reads; ACE's <c>X % 24 &gt;= 12</c> differs there and on the east/north edge (docs/open-questions.md).
+    /// </summary>
+    internal float WaterDepth(Vector3 localPoint)
+    {
+        switch (WaterType)
+        {
+            case WaterType.NotWater:
+                return 0f;
+            case WaterType.EntirelyWater:
+                return 0.9f;
+            default:
+                bool east = localPoint.X > _centreX, north = localPoint.Y > _centreY;
+                return east ? (north ? _depthNE : _depthSE) : (north ? _depthNW : _depthSW);
+        }
     }
 
     /// <summary>The south-west corner of the cell's square, landblock-local (X, Y; 24 m × the cell's column and row, exact).</summary>
@@ -73,6 +121,12 @@ public sealed class LandCell : Cell
     }
 
     /// <inheritdoc />
+    /// <remarks>
+    /// Retail CLandCell::find_env_collisions (acclient.c:354991): the terrain triangle under the mover's low
+    /// point; over it, a landblock that is entirely water stops every mover but the camera and a missile
+    /// (acclient.c:355030), and otherwise the sphere is validated against the triangle's plane sunk by the
+    /// water depth, the plane counting as water when the cell has any (acclient.c:355034, :355043).
+    /// </remarks>
     internal override TransitionState FindEnvCollisions(Transition transition)
     {
         var path = transition.SpherePath;
@@ -80,17 +134,30 @@ public sealed class LandCell : Cell
         {
             // The usual case, the check position in this cell's landblock: no offset, so sphere 0 is passed as
             // it is (subtracting a zero offset would change no bit) and not copied.
-            var triangle = FindTerrainPolygon(path.GlobalLowPoint);
+            var low = path.GlobalLowPoint;
+            var triangle = FindTerrainPolygon(low);
             if (triangle is null)
                 return TransitionState.OK;
-            return transition.ValidateWalkable(path.GlobalSphere[0], triangle.Plane, isWater: false, waterDepth: 0f, Id);
+            if (StopsInWater(transition))
+                return TransitionState.Collided;
+            return transition.ValidateWalkable(path.GlobalSphere[0], triangle.Plane, WaterType != WaterType.NotWater, WaterDepth(low), Id);
         }
         var blockOffset = LandDefs.BlockOffset(path.CheckPos.CellId, Id);
-        var walkable = FindTerrainPolygon(path.GlobalLowPoint - blockOffset);
+        var local = path.GlobalLowPoint - blockOffset;
+        var walkable = FindTerrainPolygon(local);
         if (walkable is null)
             return TransitionState.OK;
+        if (StopsInWater(transition))
+            return TransitionState.Collided;
         var check = path.GlobalSphere[0];
         check.Center -= blockOffset;
-        return transition.ValidateWalkable(check, walkable.Plane, isWater: false, waterDepth: 0f, Id);
+        return transition.ValidateWalkable(check, walkable.Plane, WaterType != WaterType.NotWater, WaterDepth(local), Id);
     }
+
+    // find_env_collisions' all-water stop (acclient.c:355030): the landblock (not the cell) is entirely water
+    // and the mover is neither the camera (OBJECTINFO IS_VIEWER) nor a missile (PhysicsState MISSILE).
+    private bool StopsInWater(Transition transition) =>
+        _blockEntirelyWater
+        && (transition.ObjectInfo.State & ObjectInfoState.IsViewer) == 0
+        && (transition.ObjectInfo.PhysicsState & PhysicsState.Missile) == 0;
 }

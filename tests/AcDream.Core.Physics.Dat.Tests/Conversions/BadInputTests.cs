@@ -179,7 +179,7 @@ public class BadInputTests
         var dat = WorldDat.From(scene.World);
         var bad = dat.EnvCells[0];
         bad.CellPortals[0].OtherCellId = 0x01FF;
-        using var files = WrittenDatFiles.Write(dat);
+        using var files = WrittenDats.Write(dat);
         var assembly = new DatWorldAssembly(files.Portal, files.Cell, dat.LandDefs, (owner, index) => dat.Objects[(owner, index)]);
         var world = new PhysicsWorld();
 

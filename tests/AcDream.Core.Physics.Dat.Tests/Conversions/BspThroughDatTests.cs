@@ -14,7 +14,7 @@ public class BspThroughDatTests
 {
     private static BspTree ThroughFile(BspTree tree, uint id = 0x0100_0010)
     {
-        using var files = WrittenDatFiles.Write([DatObjects.GfxObj(id, tree)], Array.Empty<IDBObj>());
+        using var files = WrittenDats.Write([DatObjects.GfxObj(id, tree)], Array.Empty<IDBObj>());
         var model = DatModels.ToPhysicsModel(files.Get<GfxObj>(files.Portal, id));
         Assert.NotNull(model);
         Assert.Equal(model!.Bsp.Bounds, model.BoundingSphere);

@@ -40,7 +40,7 @@ public class RetailFactsTests
         setup.PlacementFrames.Add(Placement.Default, placement);
         // The part's geometry is not stated; a small box stands in for it.
         var part = DatObjects.GfxObj(0x010008AB, BspShapes.Box(new Vector3(-0.3f), new Vector3(0.3f)));
-        using var files = WrittenDatFiles.Write([setup, part], []);
+        using var files = WrittenDats.Write([setup, part], []);
 
         var read = files.Get<Setup>(files.Portal, 0x02000108);
         var result = DatSetups.ToPhysicsSetup(read, id => DatModels.ToPhysicsModel(files.Get<GfxObj>(files.Portal, id)));
@@ -93,7 +93,7 @@ public class RetailFactsTests
         structure.Polygons.Add(13, DatObjects.Polygon(room.PolygonArray[1], vertices));
         var environment = new DatEnvironment { Id = 0x0D0003B2 };
         environment.Cells.Add(13, structure);
-        using var files = WrittenDatFiles.Write([environment], [cell]);
+        using var files = WrittenDats.Write([environment], [cell]);
 
         var readCell = files.Get<DatEnvCell>(files.Cell, 0x7D64010D);
         var readEnvironment = files.Get<DatEnvironment>(files.Portal, DatCells.EnvironmentIdOf(readCell));
@@ -138,7 +138,7 @@ public class RetailFactsTests
     public void APartsDefaultScale_IsItsZ()
     {
         var setup = new Setup { Id = 0x02000002, Flags = SetupFlags.HasDefaultScale, Parts = [0x01000001], DefaultScale = [new Vector3(3, 4, 0.5f)], SortingSphere = new DatSphere(), SelectionSphere = new DatSphere() };
-        using var files = WrittenDatFiles.Write([setup], []);
+        using var files = WrittenDats.Write([setup], []);
 
         var result = DatSetups.ToPhysicsSetup(files.Get<Setup>(files.Portal, 0x02000002), _ => null);
 
@@ -146,20 +146,25 @@ public class RetailFactsTests
         Assert.Equal(Frame.Identity.Origin, result.Parts[0].Frame.Origin);
     }
 
-    /// <summary>Heights come from the Region's land height table by index, x * 9 + y, as in CLandBlockStruct.</summary>
+    /// <summary>
+    /// Heights come from the Region's land height table by index, x * 9 + y, as in CLandBlockStruct; the terrain
+    /// words go to the terrain as stored, and their types make water (here vertex (0, 0), type 0x10: the cell at
+    /// its corner is partly water, the landblock too).
+    /// </summary>
     [Fact]
-    public void ALandBlocksHeights_AreTheTablesEntries()
+    public void ALandBlocksHeights_AreTheTablesEntries_AndItsTerrainWordsAreKept()
     {
         var block = new LandBlock { Id = 0xA9B4FFFF };
         for (int i = 0; i < 81; i++)
         {
             block.Height[i] = (byte)(i == 10 ? 200 : i % 3);
-            block.Terrain[i] = (ushort)0;
+            // Road bits 1, type 3, scenery 5; vertex 0 water (type 0x10).
+            block.Terrain[i] = (ushort)(i == 0 ? 0x10 << 2 : (5 << 11) | (3 << 2) | 1);
         }
         var table = new float[256];
         for (int i = 0; i < 256; i++)
             table[i] = i * 2f;
-        using var files = WrittenDatFiles.Write([], [block]);
+        using var files = WrittenDats.Write([], [block]);
 
         var terrain = DatTerrain.ToTerrain(files.Get<LandBlock>(files.Cell, 0xA9B4FFFF), new DatReaderWriter.Types.LandDefs { LandHeightTable = table });
 
@@ -167,5 +172,10 @@ public class RetailFactsTests
         Assert.Equal(400f, terrain.HeightAt(1, 1));
         Assert.Equal(2f, terrain.HeightAt(0, 1));
         Assert.Equal(4f, terrain.HeightAt(8, 8));
+        Assert.Equal((ushort)((5 << 11) | (3 << 2) | 1), terrain.TerrainWordAt(4, 7));
+        Assert.True(terrain.IsWaterAt(0, 0));
+        Assert.Equal(World.WaterType.PartiallyWater, terrain.CellWaterType(0, 0));
+        Assert.Equal(World.WaterType.NotWater, terrain.CellWaterType(1, 1));
+        Assert.Equal(World.WaterType.PartiallyWater, terrain.WaterType);
     }
 }

@@ -27,7 +27,7 @@ public class BuiltInScenesThroughDatTests
     public void TheDatPath_WalksBitIdenticalToTheScenePath(string name)
     {
         var scene = SceneLibrary.Load(name);
-        var throughDat = DatPath.Through(scene);
+        var throughDat = DatPath.Through(scene, SceneLibrary.ReadText(name));
         var committed = Trajectory.LoadFile(Path.Combine(ReplayDirectory, name + ".trajectory.json"));
 
         var bits = TrajectoryReplay.Replay(throughDat, SceneRunner.Run(scene), tolerance: 0f);

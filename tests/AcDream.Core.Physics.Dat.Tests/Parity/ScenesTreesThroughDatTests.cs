@@ -8,7 +8,8 @@ namespace AcDream.Core.Physics.Dat.Tests.Parity;
 /// The DAT path rebuilds a scene's geometry to the bit: every env cell's physics tree and every object part's
 /// tree node for node (planes, spheres, children, leaf flags, polygon order, vertices, sides), every object at
 /// the same position bits with the same setup shapes. The containment trees keep their planes and shape but not
-/// their spheres, which a DAT CellBSP does not store (a cell is bounded by its physics tree's sphere).
+/// their spheres, which a DAT CellBSP does not store (a cell is bounded by its physics tree's sphere). Every land
+/// cell has the same triangles and water type.
 /// </summary>
 public class ScenesTreesThroughDatTests
 {
@@ -25,7 +26,7 @@ public class ScenesTreesThroughDatTests
     public void EveryTreeAndObject_IsTheSceneOne(string name)
     {
         var scene = SceneLibrary.Load(name);
-        var dat = DatPath.Through(scene.World);
+        var dat = DatPath.Through(scene.World, SceneLibrary.ReadText(name));
         Assert.Equal(scene.World.Cells.CellIds.OrderBy(i => i), dat.Cells.CellIds.OrderBy(i => i));
         foreach (uint id in scene.World.Cells.CellIds)
             if (scene.World.Cells.Get(id) is EnvCell e)
@@ -42,9 +43,15 @@ public class ScenesTreesThroughDatTests
                     Assert.True(e.Portals[p].Polygon.Vertices.SequenceEqual(d.Portals[p].Polygon.Vertices), $"0x{id:X8}.portals[{p}].polygon");
                 }
             }
-            else if (scene.World.Cells.Get(id) is LandCell { Building: { } building })
+            else if (scene.World.Cells.Get(id) is LandCell land)
             {
-                var other = Assert.IsType<LandCell>(dat.Cells.Get(id)).Building!;
+                var datLand = Assert.IsType<LandCell>(dat.Cells.Get(id));
+                Assert.Equal(land.WaterType, datLand.WaterType);
+                Assert.Equal(land.Triangles.First.Vertices.ToArray(), datLand.Triangles.First.Vertices.ToArray());
+                Assert.Equal(land.Triangles.Second.Vertices.ToArray(), datLand.Triangles.Second.Vertices.ToArray());
+                if (land.Building is not { } building)
+                    continue;
+                var other = datLand.Building!;
                 TreeAssert.Same(building.Shell.Bsp, other.Shell.Bsp, $"0x{id:X8}.building");
                 Assert.True(Position.SameBits(building.Position, other.Position), $"0x{id:X8}.building.position");
                 Assert.Equal(building.EntranceCells.ToArray(), other.EntranceCells.ToArray());

@@ -38,7 +38,12 @@ internal sealed class WorldDat
     private readonly Dictionary<PhysicsSetup, uint> _setups = new(ReferenceEqualityComparer.Instance);
     private uint _noPhysics;
 
-    public static WorldDat From(PhysicsWorld world)
+    /// <summary>
+    /// Writes <paramref name="world"/>. The runtime keeps no terrain words once a landblock's cells are built, so
+    /// they are read from the scene's text when given (a landblock's "terrainType" or "terrainTypes", each type
+    /// as a word's bits 2–6); without it, or for a landblock that gives none, every word is 0 (dry).
+    /// </summary>
+    public static WorldDat From(PhysicsWorld world, string? sceneJson = null)
     {
         var dat = new WorldDat();
         var blocks = world.Cells.CellIds.Select(id => id >> 16).Distinct().OrderBy(b => b).ToList();
@@ -53,6 +58,7 @@ internal sealed class WorldDat
         table.CopyTo(dat.LandDefs.LandHeightTable, 0);
 
         var records = world.Objects.Records.ToList();
+        var words = sceneJson is null ? new Dictionary<uint, ushort[]>() : TerrainWords(sceneJson);
         foreach (uint block in blocks)
         {
             dat.Landblocks.Add(block);
@@ -60,7 +66,7 @@ internal sealed class WorldDat
             for (int i = 0; i < 81; i++)
             {
                 land.Height[i] = (byte)Array.IndexOf(table, grids[block][i]);
-                land.Terrain[i] = (ushort)0;
+                land.Terrain[i] = words.TryGetValue(block, out var w) ? w[i] : (ushort)0;
             }
             dat.LandBlocks.Add(land);
 
@@ -86,6 +92,28 @@ internal sealed class WorldDat
                 dat.EnvCells.Add(dat.Write(cell, records.Where(r => r.Position.CellId == cell.Id).ToList()));
         }
         return dat;
+    }
+
+    private static Dictionary<uint, ushort[]> TerrainWords(string sceneJson)
+    {
+        var result = new Dictionary<uint, ushort[]>();
+        using var doc = System.Text.Json.JsonDocument.Parse(sceneJson, new System.Text.Json.JsonDocumentOptions
+        {
+            CommentHandling = System.Text.Json.JsonCommentHandling.Skip,
+            AllowTrailingCommas = true,
+        });
+        foreach (var block in doc.RootElement.GetProperty("landblocks").EnumerateArray())
+        {
+            var idElement = block.GetProperty("id");
+            uint id = idElement.ValueKind == System.Text.Json.JsonValueKind.Number
+                ? idElement.GetUInt32()
+                : Convert.ToUInt32(idElement.GetString()!.Replace("_", "", StringComparison.Ordinal), 16);
+            if (block.TryGetProperty("terrainType", out var one))
+                result[id] = Enumerable.Repeat((ushort)(one.GetInt32() << 2), 81).ToArray();
+            else if (block.TryGetProperty("terrainTypes", out var each))
+                result[id] = each.EnumerateArray().Select(t => (ushort)(t.GetInt32() << 2)).ToArray();
+        }
+        return result;
     }
 
     /// <summary>The 81 vertex heights of a landblock, read off its land cells' triangles (vertex x * 9 + y).</summary>

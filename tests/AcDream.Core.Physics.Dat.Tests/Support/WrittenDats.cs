@@ -6,9 +6,9 @@ using DatReaderWriter.Options;
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 
 /// <summary>A portal and a cell DAT file written into a temporary folder with DatReaderWriter, then opened read-only.</summary>
-internal sealed class WrittenDatFiles : IDisposable
+internal sealed class WrittenDats : IDisposable
 {
-    private WrittenDatFiles(string folder, DatDatabase portal, DatDatabase cell)
+    private WrittenDats(string folder, DatDatabase portal, DatDatabase cell)
     {
         Folder = folder;
         Portal = portal;
@@ -20,17 +20,17 @@ internal sealed class WrittenDatFiles : IDisposable
     public DatDatabase Cell { get; }
 
     /// <summary>Writes the objects (portal ones: GfxObj, Setup, Environment; cell ones: the rest) and opens both files to read.</summary>
-    public static WrittenDatFiles Write(IEnumerable<IDBObj> portalObjects, IEnumerable<IDBObj> cellObjects)
+    public static WrittenDats Write(IEnumerable<IDBObj> portalObjects, IEnumerable<IDBObj> cellObjects)
     {
         string folder = Path.Combine(Path.GetTempPath(), "acdream-dat-" + Guid.NewGuid().ToString("N"));
         Directory.CreateDirectory(folder);
         string portal = Path.Combine(folder, "client_portal.dat"), cell = Path.Combine(folder, "client_cell_1.dat");
         WriteFile(portal, DatFileType.Portal, portalObjects);
         WriteFile(cell, DatFileType.Cell, cellObjects);
-        return new WrittenDatFiles(folder, Open(portal), Open(cell));
+        return new WrittenDats(folder, Open(portal), Open(cell));
     }
 
-    public static WrittenDatFiles Write(WorldDat world) =>
+    public static WrittenDats Write(WorldDat world) =>
         Write(world.GfxObjs.Cast<IDBObj>().Concat(world.Setups).Concat(world.Environments),
             world.LandBlocks.Cast<IDBObj>().Concat(world.Infos).Concat(world.EnvCells));
 
