@@ -41,6 +41,10 @@ public class ReadmeExampleTests
     public void AClientsWorld_CodeBlocks_AreTheStreamingWalksRegions() =>
         SameText(ReadmeBlocks("A client's world"), ExampleRegions("StreamingWalk.Program.cs", "client-world"));
 
+    [Fact]
+    public void TheRetailDatFiles_CodeBlocks_AreTheDatWalksRegions() =>
+        SameText(ReadmeBlocks("The retail DAT files"), ExampleRegions("DatWalk.Program.cs", "dat-readme"));
+
     private static void SameText(List<string> blocks, List<string> regions)
     {
         Assert.True(regions.Count >= 2, $"the example has {regions.Count} readme regions");
