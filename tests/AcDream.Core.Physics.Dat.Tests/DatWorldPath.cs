@@ -11,9 +11,11 @@ namespace AcDream.Core.Physics.Dat.Tests;
 /// </summary>
 internal static class DatWorldPath
 {
-    public static PhysicsWorld Through(PhysicsWorld world)
+    /// <summary>The world through DAT files; <paramref name="sceneJson"/>, when given, supplies the landblocks'
+    /// terrain types (the built world keeps no terrain words to write back).</summary>
+    public static PhysicsWorld Through(PhysicsWorld world, string? sceneJson = null)
     {
-        var dat = WorldDat.From(world);
+        var dat = WorldDat.From(world, sceneJson);
         using var dats = new TempDats(
             dat.GfxObjs.Cast<DBObj>().Concat(dat.Setups).Concat(dat.Environments).Append(WorldWriter.Region(dat.LandDefs)),
             dat.LandBlocks.Cast<DBObj>().Concat(dat.Infos).Concat(dat.EnvCells));
@@ -28,5 +30,5 @@ internal static class DatWorldPath
         return loader.World;
     }
 
-    public static Scene Through(Scene scene) => scene.WithWorld(Through(scene.World));
+    public static Scene Through(Scene scene, string? sceneJson = null) => scene.WithWorld(Through(scene.World, sceneJson));
 }

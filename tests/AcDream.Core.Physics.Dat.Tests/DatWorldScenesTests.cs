@@ -21,7 +21,7 @@ public class DatWorldScenesTests
     public void TheDatWorld_WalksBitIdenticalToTheScene(string name)
     {
         var scene = SceneLibrary.Load(name);
-        var throughDat = DatWorldPath.Through(scene);
+        var throughDat = DatWorldPath.Through(scene, SceneLibrary.ReadText(name));
         Assert.NotSame(scene.World, throughDat.World);
         Assert.Equal(scene.World.Cells.CellIds.Order(), throughDat.World.Cells.CellIds.Order());
         Assert.Equal(scene.World.Objects.Records.Select(r => r.Id).Order(), throughDat.World.Objects.Records.Select(r => r.Id).Order());
