@@ -76,6 +76,7 @@ internal static class ManagerParityReader
         uint cell = s.Id("cell");
         var origin = s.Vec3("origin");
         var orientation = JsonRead.Rotation(s.Req("orientation"), s.Child("orientation"));
+        RecordedWorld.CheckManagerObjects(o);
         var world = MotionParityReader.SharedWorld();
         if (world.Cells.Get(cell) is null || LandDefs.LandCellAt(0xA9B4, origin) != cell)
             throw new SceneFormatException(s.Child("cell"), $"0x{cell:X8} is not the landblock 0xA9B4 cell of {origin}.");

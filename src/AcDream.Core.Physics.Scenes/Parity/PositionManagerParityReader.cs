@@ -72,6 +72,7 @@ internal static class PositionManagerParityReader
             frames[i] = ReadFrame(items[i].Value, items[i].Path);
         if (targetStart.CellId == 0 && Array.Exists(frames, x => x.StickTo != 0))
             throw new SceneFormatException("objects", "a stick_to_object needs an object with the role \"target\" (its start).");
+        RecordedWorld.CheckManagerObjects(o);
         var world = MotionParityReader.SharedWorld();
         return new PositionManagerParityFile(name, world, mover, table, skills, start, targetStart, 1.0 / rate, frames);
     }

@@ -57,6 +57,27 @@ internal static class RecordedWorld
     /// <summary>The managers' world (door, platform, and the tree at (40, 100, 0)), as the manager README lists its objects.</summary>
     public static PhysicsWorld Managers() => Build(null, tree: true);
 
+    /// <summary>The roles a manager file's "objects" may list: the creatures it moves and the world <see cref="Managers"/> builds.</summary>
+    internal static readonly string[] ManagerRoles = ["mover", "target", "door", "platform", "tree"];
+
+    /// <summary>
+    /// Refuses a manager file whose "objects" list an object this world does not build (a role not in
+    /// <see cref="ManagerRoles"/>, with a did-you-mean): the run would go on without it.
+    /// </summary>
+    public static void CheckManagerObjects(JsonObj file)
+    {
+        foreach (var (value, at) in file.Array("objects", optional: true))
+        {
+            var other = new JsonObj(value, at);
+            string role = other.String("role");
+            if (Array.IndexOf(ManagerRoles, role) < 0)
+            {
+                string hint = FieldNames.Closest(role, ManagerRoles, maxEdits: 2) is { } meant ? $"did you mean \"{meant}\"? " : "";
+                throw new SceneFormatException(other.Child("role"), $"unknown object role \"{role}\" ({hint}this world builds: {string.Join(", ", ManagerRoles)}).");
+            }
+        }
+    }
+
     // The door's sentence must describe the built-in slab, the platform's the recorded platform: a file that moved
     // either would need a world built differently.
     private static void Expect(JsonObj world, string name, BoxElement expected)

@@ -97,10 +97,13 @@ public class SharedManagerParityTests
     [Theory]
     [InlineData("sticky", "objects", "role")]
     [InlineData("interpolate", "frames[0].commands[0]", "unreadable position")]
+    [InlineData("moveto-object", "objects[2].role", "did you mean \"door\"")]
+    [InlineData("sticky", "objects[4].role", "did you mean \"tree\"")]
     public void APositionManagersFileWithBadInput_IsAClearErrorNamingThePath(string name, string path, string message)
     {
         // A copy of the recording in a scratch folder (beside its table), broken in one place: the sticky target's
-        // object left out, or the first InterpolateTo's position made unreadable.
+        // object left out, the first InterpolateTo's position made unreadable, or an object the world does not build
+        // (a misspelt role: refused, never ignored).
         string shared = SharedFolders.Find("ace-managers")!;
         string dir = Path.Combine(Path.GetTempPath(), $"acdream-{Guid.NewGuid():N}");
         Directory.CreateDirectory(dir);
@@ -110,7 +113,12 @@ public class SharedManagerParityTests
             JsonNode root;
             using (var gz = new GZipStream(File.OpenRead(Path.Combine(shared, name + ".json.gz")), CompressionMode.Decompress))
                 root = JsonNode.Parse(gz)!;
-            if (name == "sticky")
+            if (path.EndsWith(".role", StringComparison.Ordinal))
+            {
+                int index = path[8] - '0';
+                root["objects"]![index]!["role"] = path == "objects[2].role" ? "dor" : "trees";
+            }
+            else if (name == "sticky")
                 root["objects"] = new JsonArray();
             else
                 root["frames"]![0]!["commands"]![0] = "@InterpolateTo(99.9, north, 0) heading 0";
