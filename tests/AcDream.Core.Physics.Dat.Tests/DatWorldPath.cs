@@ -11,14 +11,17 @@ namespace AcDream.Core.Physics.Dat.Tests;
 /// </summary>
 internal static class DatWorldPath
 {
+    /// <summary>The world written as DAT files in a temporary folder (deleted with the returned object).</summary>
+    public static TempDats Write(WorldDat dat) => new(
+        dat.GfxObjs.Cast<DBObj>().Concat(dat.Setups).Concat(dat.Environments).Append(WorldWriter.Region(dat.LandDefs)),
+        dat.LandBlocks.Cast<DBObj>().Concat(dat.Infos).Concat(dat.EnvCells));
+
     /// <summary>The world through DAT files; <paramref name="sceneJson"/>, when given, supplies the landblocks'
     /// terrain types (the built world keeps no terrain words to write back).</summary>
     public static PhysicsWorld Through(PhysicsWorld world, string? sceneJson = null)
     {
         var dat = WorldDat.From(world, sceneJson);
-        using var dats = new TempDats(
-            dat.GfxObjs.Cast<DBObj>().Concat(dat.Setups).Concat(dat.Environments).Append(WorldWriter.Region(dat.LandDefs)),
-            dat.LandBlocks.Cast<DBObj>().Concat(dat.Infos).Concat(dat.EnvCells));
+        using var dats = Write(dat);
         using var files = dats.Open();
         var loader = new DatWorld(files, describe: (landblock, index, owner, ownerIndex, placement) =>
         {

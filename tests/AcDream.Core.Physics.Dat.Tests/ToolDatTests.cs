@@ -28,6 +28,37 @@ public class ToolDatTests
     }
 
     [Fact]
+    public void Dat_CountsTheCottagesCellsPortalsPolygonsAndDeepestTree_AsTheSceneHasThem()
+    {
+        // The cottage scene's world written as DAT files; the expected counts come from the scene's own world
+        // (its env cells, portals, building, objects and their trees, walked node by node here).
+        var world = Scenes.SceneLibrary.Load("cottage").World;
+        using var dats = DatWorldPath.Write(Support.WorldDat.From(world));
+        var cells = world.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).Select(id => (World.EnvCell)world.Cells.Get(id)!).ToList();
+        uint landblock = cells[0].Id >> 16;
+        var records = world.Objects.Records.ToList();
+        int portals = cells.Sum(c => c.Portals.Length), outside = cells.Sum(c => c.Portals.ToArray().Count(p => p.LeadsOutside));
+        int cellPolygons = cells.Sum(c => c.PhysicsBsp?.Polygons.Length ?? 0);
+        int objectPolygons = records.Sum(r => r.Setup!.Parts.Sum(p => p.Model?.Bsp.Polygons.Length ?? 0));
+        int depth = cells.Select(c => Depth(c.PhysicsBsp)).Concat(records.SelectMany(r => r.Setup!.Parts.Select(p => Depth(p.Model?.Bsp)))).Max();
+        var (code, output, err) = Tool("dat", dats.Directory, $"0x{landblock:X4}");
+        Assert.True(code == 0, err);
+        Assert.Contains($"{N(cells.Count, "env cell")} ({N(portals, "portal")}, {outside} to outside)", output);
+        Assert.Contains($"{N(records.Count, "static object")} (", output);
+        Assert.Contains($"physics polygons: {cellPolygons} in env cells, ", output);
+        Assert.Contains($" in object parts; deepest physics BSP {depth} (", output);
+        Assert.Contains($"{objectPolygons} in object parts", output);
+        Assert.True(cellPolygons > 0 && depth > 1);
+    }
+
+    private static string N(int n, string noun) => $"{n} {noun}{(n == 1 ? "" : "s")}";
+
+    private static int Depth(Bsp.BspTree? tree) => tree is null ? 0 : Depth(tree, 0);
+
+    private static int Depth(Bsp.BspTree tree, int node) =>
+        node < 0 ? 0 : 1 + Math.Max(Depth(tree, tree.Nodes[node].Front), Depth(tree, tree.Nodes[node].Back));
+
+    [Fact]
     public void Dat_WithoutALandblock_ListsTheFiles()
     {
         using var dats = WorldWriter.Grid(0x80, 0x81, 0x40, 0x40);
