@@ -156,6 +156,9 @@ public sealed class MotionTable
     {
         if (data is null)
             throw new ArgumentException($"{at}: is null.", at);
+        // The reader's limit on flags (0 to 3): no bits but HasVelocity and HasOmega.
+        if ((data.Flags & ~(MotionDataFlags.HasVelocity | MotionDataFlags.HasOmega)) != 0)
+            throw new ArgumentException($"{at}.flags: must be 0 to 3 (1 HasVelocity, 2 HasOmega), got {(int)data.Flags}.", at);
         if (data.Anims.Length > MaxAnimsPerMotion)
             throw new ArgumentException($"{at}.anims: at most {MaxAnimsPerMotion} animations, got {data.Anims.Length}.", at);
         Finite(data.Velocity, $"{at}.velocity");

@@ -79,6 +79,15 @@ public class MotionTableTests
     }
 
     [Fact]
+    public void TheConstructor_RefusesUnknownMotionFlags_AsTheReaderDoes()
+    {
+        // The reader takes flags 0 to 3 only; the constructor took any byte.
+        var odd = new MotionData(0, (MotionDataFlags)4, [new AnimData(0x03000001, 0, -1, 30f)], Vector3.Zero, Vector3.Zero);
+        var ex = Assert.Throws<ArgumentException>(() => Build(new() { [ReadyKey] = odd }));
+        Assert.StartsWith("cycles[0x003D0003].flags: must be 0 to 3", ex.Message);
+    }
+
+    [Fact]
     public void AMissingDefaultCycle_IsRefused()
     {
         var ex = Assert.Throws<ArgumentException>(() => Build(new Dictionary<uint, MotionData>()));

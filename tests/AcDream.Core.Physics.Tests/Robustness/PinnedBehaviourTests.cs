@@ -95,6 +95,12 @@ public class PinnedBehaviourTests
         offset = new Frame(Vector3.Zero);
         sticky.AdjustOffset(ref offset, 0.1f, View(100f, 100f));
         Assert.Equal(-0.08f, offset.Origin.Y, 4);
+        // An object whose max speed is below EPSILON catches up at DefaultSpeed 15 m/s: 1.5 m in 0.1 s of a 1.72 m gap
+        // (3 m apart: 3 - 0.98 - 0.3).
+        sticky.HandleUpdateTarget(7, TargetStatus.Ok, TestGeometry.At(100f, 103f, 0f));
+        offset = new Frame(Vector3.Zero);
+        sticky.AdjustOffset(ref offset, 0.1f, new ObjectView(TestGeometry.At(100f, 100f, 0f), true, 0.48f, 0f, 0f, false));
+        Assert.Equal(1.5f, offset.Origin.Y, 4);
     }
 
     private static readonly PhysicsSetup Ball = new() { Spheres = [new Sphere(Vector3.Zero, 0.4f)] };

@@ -90,6 +90,7 @@ public class MotionSnapshotTests
     [InlineData("framerate 1e6", "snapshot motion.sequence[")]
     [InlineData("frame number 1e10", "snapshot motion.sequence.frameNumber (byte")]
     [InlineData("frame number -5", "snapshot motion.sequence.frameNumber (byte")]
+    [InlineData("frame number 1e6", "snapshot motion.sequence.frameNumber (byte")] // past any animation (at most 100 000 frames)
     [InlineData("velocity 1e30", "snapshot motion.sequence.velocity.x (byte")]
     [InlineData("omega 1e30", "snapshot motion.sequence.omega.z (byte")]
     public void ACorruptedMotionSection_IsRefusedNamingTheField_AndTheTargetIsUnchanged(string row, string message)
@@ -114,6 +115,7 @@ public class MotionSnapshotTests
             "framerate 1e6" => Patch(good, lastNodeAt + 12, BitConverter.GetBytes(1e6f)),
             "frame number 1e10" => Patch(good, frameAt, BitConverter.GetBytes(1e10)),
             "frame number -5" => Patch(good, frameAt, BitConverter.GetBytes(-5.0)),
+            "frame number 1e6" => Patch(good, frameAt, BitConverter.GetBytes(1e6)),
             "velocity 1e30" => Patch(good, frameAt + 8, BitConverter.GetBytes(1e30f)),
             "omega 1e30" => Patch(good, frameAt + 28, BitConverter.GetBytes(1e30f)),
             _ => throw new ArgumentException(row),
