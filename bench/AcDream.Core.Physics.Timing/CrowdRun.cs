@@ -129,14 +129,16 @@ internal static class CrowdRun
         var ms2 = new double[ticks];
         var near = new int[ticks];
         double step1 = 0, step2 = 0, loop1 = 0, loop2 = 0, busyMax = 0, busySum = 0, loopBusyMax = 0, loopBusySum = 0;
-        long bytes = 0;
+        long bytes = 0, bytes1 = 0;
         int settledFrom = ticks - ticks / 3;
         for (int t = 0; t < ticks; t++)
         {
+            long before = t >= settledFrom ? GC.GetTotalAllocatedBytes(precise: true) : 0;
             long t0 = Stopwatch.GetTimestamp();
             one.Tick();
             ms1[t] = Stopwatch.GetElapsedTime(t0).TotalMilliseconds;
-            long before = t >= settledFrom ? GC.GetTotalAllocatedBytes(precise: true) : 0;
+            if (t >= settledFrom) bytes1 += GC.GetTotalAllocatedBytes(precise: true) - before;
+            before = t >= settledFrom ? GC.GetTotalAllocatedBytes(precise: true) : 0;
             t0 = Stopwatch.GetTimestamp();
             two.Tick();
             ms2[t] = Stopwatch.GetElapsedTime(t0).TotalMilliseconds;
@@ -161,7 +163,7 @@ internal static class CrowdRun
         }
         if (one.Fingerprint != two.Fingerprint)
             Console.WriteLine($"crowd {n}: ONE AND TWO THREADS DIFFER: {one.Fingerprint:X16} against {two.Fingerprint:X16}");
-        Print(n, 1, ticks, one.Fingerprint, ms1, near, 0);
+        Print(n, 1, ticks, one.Fingerprint, ms1, near, bytes1 / (double)(ticks - settledFrom));
         Print(n, 2, ticks, two.Fingerprint, ms2, near, bytes / (double)(ticks - settledFrom));
         double total1 = Sum(ms1), total2 = Sum(ms2);
         var c = CultureInfo.InvariantCulture;
