@@ -1,6 +1,7 @@
 using System.IO;
 using DatReaderWriter;
 using DatReaderWriter.Enums;
+using DatReaderWriter.Lib.IO;
 using DatReaderWriter.Options;
 using DatReaderWriter.Types;
 
@@ -27,7 +28,7 @@ internal sealed class TempDats : IDisposable
     public DatFiles Open() => DatFiles.Open(Directory);
 
     /// <summary>Writes a DAT file of the given type holding the objects (each under its Id).</summary>
-    public static void Write(string path, DatFileType type, IEnumerable<DBObj> objects)
+    public static void Write(string path, DatFileType type, IEnumerable<IDBObj> objects)
     {
         using var dat = new DatDatabase(o =>
         {
@@ -39,7 +40,7 @@ internal sealed class TempDats : IDisposable
         {
             var result = dat.TryWriteFile(obj);
             if (!result.Success)
-                throw new InvalidOperationException($"writing 0x{obj.Id:X8}: {result.Error}");
+                throw new InvalidOperationException($"writing 0x{obj.Id:X8} to {path}: {result.Error}");
         }
     }
 

@@ -25,30 +25,14 @@ internal sealed class WrittenDats : IDisposable
         string folder = Path.Combine(Path.GetTempPath(), "acdream-dat-" + Guid.NewGuid().ToString("N"));
         Directory.CreateDirectory(folder);
         string portal = Path.Combine(folder, "client_portal.dat"), cell = Path.Combine(folder, "client_cell_1.dat");
-        WriteFile(portal, DatFileType.Portal, portalObjects);
-        WriteFile(cell, DatFileType.Cell, cellObjects);
+        TempDats.Write(portal, DatFileType.Portal, portalObjects);
+        TempDats.Write(cell, DatFileType.Cell, cellObjects);
         return new WrittenDats(folder, Open(portal), Open(cell));
     }
 
     public static WrittenDats Write(WorldDat world) =>
         Write(world.GfxObjs.Cast<IDBObj>().Concat(world.Setups).Concat(world.Environments),
             world.LandBlocks.Cast<IDBObj>().Concat(world.Infos).Concat(world.EnvCells));
-
-    private static void WriteFile(string path, DatFileType type, IEnumerable<IDBObj> objects)
-    {
-        using var dat = new DatDatabase(o =>
-        {
-            o.FilePath = path;
-            o.AccessType = DatAccessType.ReadWrite;
-        });
-        dat.BlockAllocator.InitNew(type, 0);
-        foreach (var obj in objects)
-        {
-            var result = dat.TryWriteFile(obj);
-            if (!result.Success)
-                throw new InvalidOperationException($"writing 0x{obj.Id:X8} to {path}: {result.Error}");
-        }
-    }
 
     private static DatDatabase Open(string path) => new(o =>
     {
