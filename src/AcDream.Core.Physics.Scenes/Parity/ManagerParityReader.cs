@@ -66,16 +66,25 @@ internal static class ManagerParityReader
     public static ManagerParityFile Read(JsonElement root, string name, string directory)
     {
         var o = new JsonObj(root, string.Empty);
+        // Read by ParityReader (format, version) or words for a reader (the rest; "events" repeats the frames' calls).
+        MotionParityReader.Informational(o, "format", "version", "ace", "name", "description", "scheduling", "events");
         var table = MotionParityReader.ReadTable(o, directory);
         double rate = MotionParityReader.ReadRate(o);
         var m = o.Obj("mover");
         var skills = RetailPlayerSkills(m, table);
+        // The mover is the retail player (RetailPlayerSkills checks it); its ids, state bits and ACE's run rate
+        // (which the skills decide here) are not compared.
+        MotionParityReader.Informational(m, "id", "weenie", "state", "runRate");
+        m.End();
         // The retail player (its spheres, step heights 0.6 and 0.04), Gravity as the README's mover.
         var mover = MoverDescription.Player().With(physicsState: PhysicsState.Gravity | PhysicsState.EdgeSlide);
         var s = o.Obj("start");
         uint cell = s.Id("cell");
         var origin = s.Vec3("origin");
         var orientation = JsonRead.Rotation(s.Req("orientation"), s.Child("orientation"));
+        // The start is placed on the floor; ACE's heading, contact and clock at the start are not compared.
+        MotionParityReader.Informational(s, "aceHeading", "contact", "time");
+        s.End();
         RecordedWorld.CheckManagerObjects(o);
         var world = MotionParityReader.SharedWorld();
         if (world.Cells.Get(cell) is null || LandDefs.LandCellAt(0xA9B4, origin) != cell)
@@ -93,7 +102,9 @@ internal static class ManagerParityReader
             frames[i] = ReadFrame(items[i].Value, items[i].Path, previousOrigin, ref lastUpdate);
             previousOrigin = frames[i].Origin;
         }
-        return new ManagerParityFile(name, o.String("description", string.Empty) ?? string.Empty, world, mover, table, skills, start, 1.0 / rate, frames);
+        string description = o.String("description", string.Empty) ?? string.Empty;
+        o.End();
+        return new ManagerParityFile(name, description, world, mover, table, skills, start, 1.0 / rate, frames);
     }
 
     /// <summary>The file's mover, which must be the retail player with the file's table: its Run skill.</summary>
@@ -136,9 +147,15 @@ internal static class ManagerParityReader
                 lastUpdate = time;
                 var p = t.Obj("targetPosition");
                 update = new Position(p.Id("cell"), p.Vec3("origin"));
+                EndPosition(p);
                 var q = t.Obj("interpolatedPosition");
                 interpolated = new Position(q.Id("cell"), q.Vec3("origin"));
+                EndPosition(q);
             }
+            // The target's id, radius, status, velocity and quantum: ACE's bookkeeping, not compared; an update
+            // is known by its time (the positions are read only when it changes).
+            MotionParityReader.Informational(t, "objectID", "quantum", "radius", "status", "velocity", "targetPosition", "interpolatedPosition");
+            t.End();
         }
         var i = f.Obj("interpreted");
         var mt = f.Opt("moveTo") is { ValueKind: JsonValueKind.Object } mte ? new JsonObj(mte, f.Child("moveTo")) : (JsonObj?)null;
@@ -153,10 +170,31 @@ internal static class ManagerParityReader
             command = mv.Id("currentCommand");
             aux = mv.Id("auxCommand");
             fails = mv.Int("failProgressCount", 0);
+            // The manager's inner state (distances, times, nodes, positions) is ACE's and not compared: the
+            // mover's position, motion and the counts above show where it leads.
+            MotionParityReader.Informational(mv, "currentTargetPosition", "distance", "holdKeyToApply", "initialized", "movingAway", "node",
+                "originalDistance", "originalDistanceTime", "pending", "previousDistance", "previousDistanceTime", "previousHeading",
+                "soughtPosition", "topLevelObjectID");
+            mv.End();
         }
-        return new ManagerFrame([.. calls], update, interpolated, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
+        var frame = new ManagerFrame([.. calls], update, interpolated, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
             f.Bool("onWalkable", false), i.Id("forwardCommand"), i.Float("forwardSpeed"), i.Id("turnCommand"), i.Float("turnSpeed"), kind, command, aux,
             fails, completed);
+        // The sidestep is not part of a MoveTo; the rest is ACE's state beside what is compared (the frame's index
+        // and times follow the file's rate; the sequence, velocity, orientation and the other managers' state).
+        MotionParityReader.Informational(i, "sidestepCommand", "sidestepSpeed");
+        i.End();
+        MotionParityReader.Informational(f, "frame", "t", "time", "quantum", "quantumRan", "orientation", "velocity", "cachedVelocity", "sliding",
+            "transientState", "isAnimating", "motionState", "interpolation", "sticky", "others");
+        f.End();
+        return frame;
+    }
+
+    /// <summary>A recorded position's heading is not compared (the target is a point).</summary>
+    private static void EndPosition(JsonObj p)
+    {
+        MotionParityReader.Informational(p, "aceHeading");
+        p.End();
     }
 
     // The ACE calls as the recording logs them:

@@ -48,15 +48,22 @@ internal static class PositionManagerParityReader
     public static PositionManagerParityFile Read(JsonElement root, string name, string directory)
     {
         var o = new JsonObj(root, string.Empty);
+        // Read by ParityReader (format, version) or words for a reader (the rest; "events" repeats the frames' calls).
+        MotionParityReader.Informational(o, "format", "version", "ace", "name", "description", "scheduling", "events");
         var table = MotionParityReader.ReadTable(o, directory);
         double rate = MotionParityReader.ReadRate(o);
         var m = o.Obj("mover");
         var skills = ManagerParityReader.RetailPlayerSkills(m, table);
         uint id = m.Has("id") ? m.Id("id") : 0x50000001u;
         var mover = MoverDescription.Player(objectId: id, stepDownHeight: 0.04f);
+        MotionParityReader.Informational(m, "weenie", "state", "runRate");
+        m.End();
         var s = o.Obj("start");
         var origin = s.Vec3("origin");
         var start = MoverState.OnFloor(At(origin, s.Child("origin")), 0f);
+        // The start is placed on the floor; ACE's cell, heading, orientation, contact and clock are not compared.
+        MotionParityReader.Informational(s, "cell", "aceHeading", "orientation", "contact", "time");
+        s.End();
         var targetStart = new Position(0, Vector3.Zero);
         foreach (var (value, at) in o.Array("objects", optional: true))
         {
@@ -74,6 +81,7 @@ internal static class PositionManagerParityReader
             throw new SceneFormatException("objects", "a stick_to_object needs an object with the role \"target\" (its start).");
         RecordedWorld.CheckManagerObjects(o);
         var world = MotionParityReader.SharedWorld();
+        o.End();
         return new PositionManagerParityFile(name, world, mover, table, skills, start, targetStart, 1.0 / rate, frames);
     }
 
@@ -114,7 +122,13 @@ internal static class PositionManagerParityReader
             target = new Position(other.Id("cell"), other.Vec3("origin"));
         }
         bool stuck = f.Opt("sticky") is { ValueKind: JsonValueKind.Object } st && new JsonObj(st, f.Child("sticky")).Id("targetID") != 0;
-        return new PositionFrame(interpolateTo, stickTo, target, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), threw, stuck);
+        var frame = new PositionFrame(interpolateTo, stickTo, target, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), threw, stuck);
+        // Compared: the position, cell, heading, the target's place and whether the mover sticks; the rest is ACE's
+        // state beside them (the frame's index and times follow the file's rate).
+        MotionParityReader.Informational(f, "frame", "t", "time", "quantum", "quantumRan", "orientation", "velocity", "cachedVelocity", "sliding",
+            "transientState", "isAnimating", "contact", "onWalkable", "interpreted", "motionState", "moveTo", "targetInfo", "interpolation");
+        f.End();
+        return frame;
     }
 
     // The recorded positions run on north across the landblock edge (y 192 m and more is 0xA9B5).

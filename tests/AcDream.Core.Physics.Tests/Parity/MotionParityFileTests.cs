@@ -139,6 +139,22 @@ public sealed class MotionParityFileTests : IDisposable
         Assert.DoesNotContain("0x00000000", err);
     }
 
+    // A manager file's reader builds or names every field it is given: an unknown one is refused, never ignored.
+    [Theory]
+    [InlineData("p.json.gz", "\"aceHeading\": 0,", "\"aceHeading\": 0, \"orign\": [60, 60, 0],", "frames[0].orign: unknown field \"orign\" (did you mean \"origin\"?")]
+    [InlineData("sticky.json.gz", "\"aceHeading\": 0,", "\"aceHeading\": 0, \"stickey\": 1,", "frames[0].stickey: unknown field \"stickey\" (did you mean \"sticky\"?")]
+    [InlineData("p.json.gz", "\"runSkill\": 200", "\"runSkill\": 200, \"runSkil\": 200", "mover.runSkil: unknown field \"runSkil\" (did you mean \"runSkill\"?")]
+    public void AnUnknownFieldInAManagerFile_IsRefusedWithADidYouMean(string name, string find, string replace, string expected)
+    {
+        File.WriteAllText(Path.Combine(_dir, "table.json"), Table);
+        string text = ManagerFile("PhysicsObj.TurnToHeading(DesiredHeading 90) -> x");
+        Assert.Contains(find, text);
+        WriteGzip(name, text.Replace(find, replace));
+        var (code, err) = Parity();
+        Assert.Equal(2, code);
+        AssertOneLine(err, $"acdream-physics: {name}: {expected}");
+    }
+
     [Fact]
     public void AGarbledMoveToCall_IsUnreadable_NotARawDotNetError()
     {
