@@ -91,9 +91,13 @@ internal static class ParityReader
             return new ParitySet(name, motion.World, [], RequireBitIdentical: false, motion);
         }
         CheckFrameTotal(root, format == AceFormat ? "approaches" : "movers");
-        return format == AceFormat
+        var set = format == AceFormat
             ? ReadAce(o, name)
             : ReadReal(o, name, directory);
+        // Words for a reader: how the file was recorded, what its frame fields mean, ACE's corrections.
+        MotionParityReader.Informational(o, "ace", "comparedWith", "frameFields", "approachRule", "ground", "frameRule", "startRule", "aceCorrections");
+        o.End();
+        return set;
     }
 
     /// <summary>Refuses a file whose runs hold more than <see cref="MaxFramesPerFile"/> frames in all, before any run is read (a malformed list is left to the reader's own errors).</summary>
@@ -146,6 +150,7 @@ internal static class ParityReader
                 throw new SceneFormatException(a.Child("start"), $"{start} is not in landblock 0x{landblock:X4} of scene \"{sceneName}\".");
             var state = MoverState.OnFloor(new Position(cell, start), 0f);
             var frames = ReadFrames(a.Req("frames"), a.Child("frames"), offset, contactPlane: false);
+            a.End();
             runs.Add(new ParityRun(runName, mover, state, frames));
         }
         if (runs.Count == 0)
@@ -163,6 +168,7 @@ internal static class ParityReader
         var position = o.Vec3("position");
         var rotation = o.Rotation("rotation");
         var state = JsonRead.Flags<PhysicsState>(o.Req("state"), o.Child("state"));
+        o.End();
         if (!world.Objects.Contains(id))
             throw new SceneFormatException(o.Child("id"), $"object 0x{id:X8} is not in built-in scene \"{sceneName}\".");
         uint cell = LandDefs.LandCellAt(landblock, position);
@@ -194,6 +200,9 @@ internal static class ParityReader
         float stepDown = p.Float("stepDown");
         var state = NamedFlags<PhysicsState>(p.Req("state"), p.Child("state"));
         var info = p.Bool("isPlayer", false) ? ObjectInfoState.IsPlayer : ObjectInfoState.None;
+        // The header's rule places each approach's start on the floor (MoverState.OnFloor); the recorded start state says the same.
+        MotionParityReader.Informational(p, "startState");
+        p.End();
         try
         {
             return new MoverDescription(id, spheres, stepUp, stepDown, state, info);
@@ -255,12 +264,16 @@ internal static class ParityReader
         {
             var m = new JsonObj(value, path);
             string moverName = m.String("name");
+            // The scene's mover of this name is the mover (its description is the scene file's, checked by its SHA-256);
+            // the file repeats it for a reader, and notes where a mover leaves the landblock.
+            MotionParityReader.Informational(m, "id", "spheres", "state", "stateNames", "stepUp", "stepDown", "objectInfo", "leavesLandblockAtFrame");
             if (m.Has("excluded"))
                 continue; // The file keeps only part of an excluded mover's frames (it leaves the loaded world).
             if (!byName.TryGetValue(moverName, out var sceneMover))
                 throw new SceneFormatException(m.Child("name"), $"scene \"{sceneFile}\" has no mover \"{moverName}\".");
             var start = StartStateReader.Read(m.Req("start"), m.Child("start"), scene.World);
             var frames = ReadFrames(m.Req("frames"), m.Child("frames"), offset: null, contactPlane: true);
+            m.End();
             runs.Add(new ParityRun(moverName, sceneMover.Description, start, frames));
         }
         if (runs.Count == 0)

@@ -219,6 +219,21 @@ public sealed class ParityCheckTests : IDisposable
         Assert.Equal("", ex.JsonPath);
     }
 
+    // A field the reader neither builds nor names is refused, never ignored (a misspelt one gets a did-you-mean).
+    [Theory]
+    [InlineData("\"landblock\": \"0xA9B4\",", "\"landblock\": \"0xA9B4\", \"landblok\": 1,", "landblok")]
+    [InlineData("\"isPlayer\": true}", "\"isPlayer\": true, \"stepUpp\": 1}", "player.stepUpp")]
+    [InlineData("\"state\": \"0x10008\"}", "\"state\": \"0x10008\", \"scale\": 2}", "objects[0].scale")]
+    [InlineData("\"hz\": 30,", "\"hz\": 30, \"rate\": 30,", "approaches[0].rate")]
+    public void AnUnknownFieldInAnAceFile_IsRefusedNamingIt(string find, string replace, string path)
+    {
+        string text = AceFile(AceFrames);
+        Assert.Contains(find, text);
+        var ex = Assert.Throws<SceneFormatException>(() => ParityCheck.CheckFile(Write("bad.json.gz", text.Replace(find, replace))));
+        Assert.Equal(path, ex.JsonPath);
+        Assert.StartsWith("unknown field", ex.Detail);
+    }
+
     private static (int Code, string Out, string Err) Tool(params string[] args)
     {
         var stdout = new StringWriter();
