@@ -294,4 +294,24 @@ public class BodyMotionTests
         Assert.Equal(Vector3.Zero, r.Body.Velocity);
         Assert.Equal(Vector3.Zero, r.Body.Acceleration);
     }
+
+    [Fact]
+    public void LeaveGroundVelocity_IsCappedAt50MetresASecond_KeepingItsDirection()
+    {
+        // get_leave_ground_velocity then set_velocity (CMotionInterp.c:530): (40, 0, 30) is 50 m/s exactly; (80, 0, 60) caps to it.
+        var v = BodyMotion.LeaveGroundVelocity(Vector3.Zero, new Vector3(80f, 0f, 0f), 60f);
+        Assert.Equal(40f, v.X, 4);
+        Assert.Equal(30f, v.Z, 4);
+    }
+
+    [Fact]
+    public void ABodyLandingOnWalkableGroundFromTheAir_Bounces()
+    {
+        // handle_all_collisions (CPhysicsObj.c:6227): not on walkable ground before, so the bounce applies on landing:
+        // -10 m/s into a floor with elasticity 0.5 leaves +5 m/s.
+        var v = new Vector3(0f, 0f, -10f);
+        BodyMotion.HandleCollisions(ref v, PhysicsState.Gravity, 0.5f, prevOnWalkable: false, onWalkable: true,
+            collisionNormalValid: true, Vector3.UnitZ, framesStationaryFall: 0, carried: 0);
+        Assert.Equal(5f, v.Z, 4);
+    }
 }

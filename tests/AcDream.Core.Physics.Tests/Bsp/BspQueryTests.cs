@@ -42,6 +42,27 @@ public class BspQueryTests
         Assert.False(info.ContactPlaneIsWater);
     }
 
+    /// <summary>
+    /// BSPTREE::step_sphere_down on an object scaled 2: the probe is the step divided by the scale in the tree's
+    /// space, and the landing offset is multiplied back. The box's top face (local z 1) is at z 2; a sphere of
+    /// radius 0.5 checked at z 2.3 (local 1.15, radius 0.25: 0.1 into the face) after a probe of 0.3 m (local 0.15)
+    /// is lifted onto it, to z 2.5 (local 1.25), giving back 0.1 of the local 0.15: walk_interp 1 − 0.1 / 0.15 = 1/3.
+    /// </summary>
+    [Fact]
+    public void StepDown_OnAScaledObject_ProbesAndLandsInTheScaledSpace()
+    {
+        var tree = BoxFixtures.SolidBox(out var faces);
+        var t = BoxFixtures.MakeTransition(new Vector3(0.4f, 0, 2.6f), new Vector3(0.4f, 0, 2.3f), 0.5f);
+        var path = t.SpherePath;
+        path.CacheLocalSpaceSphere(new Position(BoxFixtures.Cell, Vector3.Zero), 2f);
+        path.StepDown = true;
+        path.StepDownAmt = 0.3f;
+        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 2f));
+        Assert.Equal(2.5f, path.CheckPos.Origin.Z, 5);
+        Assert.Equal(1f / 3f, path.WalkInterp, 5);
+        Assert.Same(faces[4], path.Walkable);
+    }
+
     [Fact]
     public void StepDown_NothingBelow_IsOk()
     {

@@ -61,6 +61,16 @@ public class MotionTableTests
     }
 
     [Fact]
+    public void TheConstructor_RefusesOneEntryPastTheCap_WithNoAnimations()
+    {
+        // No animations: one cycle and MaxEntries link targets are MaxEntries + 1 entries, refused by the count after
+        // the animations (the one inside the animation loop never runs).
+        var ex = Assert.Throws<ArgumentException>(() => Build(new() { [ReadyKey] = Cycle() }, [], ManyLinks(MotionTable.MaxEntries / 2)));
+        Assert.StartsWith($"entries: a table holds at most {MotionTable.MaxEntries} entries", ex.Message);
+        Assert.Contains($"got {MotionTable.MaxEntries + 1}", ex.Message);
+    }
+
+    [Fact]
     public void TheReader_RefusesOneEntryPastTheCap_CountingLinksAsTheConstructorDoes()
     {
         // One animation, one cycle and MaxEntries - 1 links: one past the cap, all in one link key (the old reader

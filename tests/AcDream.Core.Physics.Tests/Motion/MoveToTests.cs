@@ -152,6 +152,31 @@ public class MoveToTests
         Assert.Equal(MotionCommand.Ready, rig.Motion.Interpreted.ForwardCommand);
     }
 
+    /// <summary>
+    /// HandleMoveToPosition (acclient.c:345576) turns while moving only for an aim error above 20° either way: the
+    /// error is taken in 0..360, so a body facing 10° right of its target (error 350) does not turn, one facing 30°
+    /// right of it (error 330) turns left, and the mirror cases. The target is due north (heading 0).
+    /// </summary>
+    // The interpreted turn is TurnRight with a negative speed for a left turn (adjust_motion), so the sign tells them apart.
+    [Theory]
+    [InlineData(10f, 0)]
+    [InlineData(30f, -1)]
+    [InlineData(350f, 0)]
+    [InlineData(330f, 1)]
+    public void WhileMoving_AnAimErrorWithin20DegreesEitherWay_DoesNotTurn(float heading, int expectedTurn)
+    {
+        var rig = Rig();
+        rig.Motion.MoveToPosition(TestGeometry.At(60f, 90f, 0f), MoveToParameters.Default, rig.Mover, rig.State, rig.Body);
+        rig.Frames(40); // any first turn done, running north
+        Assert.Equal(0u, rig.Motion.Interpreted.TurnCommand);
+        rig.State.Position.Frame = new Frame(rig.State.Position.Frame.Origin, Headings.Facing(heading));
+        rig.Frames(1);
+        var interpreted = rig.Motion.Interpreted;
+        int turn = interpreted.TurnCommand == 0 ? 0 : Math.Sign(interpreted.TurnSpeed);
+        Assert.True(interpreted.TurnCommand is 0 or MotionCommand.TurnRight, $"turn command 0x{interpreted.TurnCommand:X8}");
+        Assert.Equal(expectedTurn, turn);
+    }
+
     [Fact]
     public void TurnToHeading_TurnsThreeDegreesAQuantum_ThenSnapsExactly()
     {

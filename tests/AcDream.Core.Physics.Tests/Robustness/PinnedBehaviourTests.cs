@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Snapshots;
+using AcDream.Core.Physics.Tests.Managers;
 using AcDream.Core.Physics.Tests.Motion;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
@@ -101,6 +102,26 @@ public class PinnedBehaviourTests
         offset = new Frame(Vector3.Zero);
         sticky.AdjustOffset(ref offset, 0.1f, new ObjectView(TestGeometry.At(100f, 100f, 0f), true, 0.48f, 0f, 0f, false));
         Assert.Equal(1.5f, offset.Origin.Y, 4);
+    }
+
+    [Fact]
+    public void InterpolatingWhileStuck_TheStickerSetsTheOffset_AndNoInterpolationNodeFails()
+    {
+        // PositionManager::adjust_offset runs the interpolation, then the sticky manager (whose offset replaces it), and
+        // tells the interpolation it is sticking: its progress check then always passes (CInterpolationManager.c:389177).
+        // A player stuck to a target 1.6 m north (the gap closes to 0.3 m: y 60.34) and asked to interpolate to a node
+        // 10 m south: the node makes no progress, yet it neither fails nor blips, and the sticker holds the player.
+        var rig = new ManagerRig(60f, 60f);
+        rig.Manager.StickTo(0x50000002, 0.48f, 1.835f, rig.Mover);
+        rig.Manager.UpdateTarget(0x50000002, ManagerRig.At(60f, 61.6f));
+        rig.InterpolateTo(60f, 50f);
+        for (int frame = 1; frame <= 20; frame++)
+        {
+            rig.Frame();
+            Assert.Equal(60.34f, rig.Origin.Y, 4);
+            Assert.Equal(0, rig.Manager.FailedNodes);
+            Assert.True(rig.Manager.IsInterpolating, $"frame {frame}: the node was dropped");
+        }
     }
 
     private static readonly PhysicsSetup Ball = new() { Spheres = [new Sphere(Vector3.Zero, 0.4f)] };

@@ -122,6 +122,30 @@ public class CylSphereCollisionTests
     }
 
     /// <summary>
+    /// CCylSphere::step_sphere_down (acclient.c:361573) refuses a lift whose walk fraction falls below −0.1: a
+    /// check sphere a little below the lift the step allows still rests on the cap, one further below collides.
+    /// Post height 2, radius 0.5, step 0.5: lift = 2.5 − z, walk_interp = 1 − lift / 0.5.
+    /// </summary>
+    [Theory]
+    [InlineData(1.98f, TransitionState.Adjusted)] // lift 0.52: walk_interp −0.04, within the floor
+    [InlineData(1.9f, TransitionState.Collided)]  // lift 0.6: walk_interp −0.2, below it
+    [InlineData(1.8f, TransitionState.Collided)]  // lift 0.7: walk_interp −0.4
+    public void StepDown_WalkInterpFloorIsMinusOneTenth(float z, TransitionState expected)
+    {
+        var t = Mover(new Vector3(0, 0, z + 0.5f), new Vector3(0, 0, z));
+        t.SpherePath.StepDown = true;
+        t.SpherePath.StepDownAmt = 0.5f;
+        Assert.Equal(expected, CylSphereCollision.IntersectsSphere(Post, t));
+        if (expected == TransitionState.Adjusted)
+        {
+            Assert.Equal(2.5f, CheckOrigin(t).Z, 4);
+            Assert.Equal(1f - (2.5f - z) / 0.5f, t.SpherePath.WalkInterp, 4);
+        }
+        else
+            Assert.Equal(1f, t.SpherePath.WalkInterp);
+    }
+
+    /// <summary>
     /// Retail CCylSphere::step_sphere_down (acclient.c:361573) keeps the lift and the walk fraction on the
     /// x87 stack at double precision and rounds only its float stores. By hand, for a post 1.7 m high, a
     /// check sphere of radius 0.48 at z = 2.1556098461151123 stepping down 0.5: lift = f(1.7f + 0.48f − z)

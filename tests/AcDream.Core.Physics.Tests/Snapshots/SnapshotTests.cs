@@ -122,6 +122,51 @@ public class SnapshotTests
         Assert.StartsWith(message, ex.Message);
     }
 
+    /// <summary>
+    /// A body's pending time beyond HugeQuantum (a frame retail drops, CPhysics::UseTime) or below zero is a state no
+    /// step leaves behind: the snapshot is refused naming body.pendingTime; HugeQuantum itself loads.
+    /// </summary>
+    [Theory]
+    [InlineData(PhysicsConstants.HugeQuantum + 0.5, false)]
+    [InlineData(-1.0 / 70, false)]
+    [InlineData(PhysicsConstants.HugeQuantum, true)]
+    public void ABodysPendingTime_OutsideZeroToHugeQuantum_IsRefused(double pending, bool loads)
+    {
+        var body = BodyState.Creature();
+        body.PendingTime = 1.0 / 70; // a bit pattern found once in the bytes
+        var good = Snapshot.SaveMover(MoverState.OnFloor(TestGeometry.At(1, 2, 3), 3f), body);
+        byte[] marker = BitConverter.GetBytes(1.0 / 70);
+        int at = good.AsSpan().IndexOf(marker);
+        Assert.True(at > 0 && good.AsSpan(at + 1).IndexOf(marker) < 0, "the pending time's bytes are not found once");
+        var bad = Patch(good, at, BitConverter.GetBytes(pending));
+        if (loads)
+        {
+            Snapshot.LoadMover(bad, out _, out var loaded);
+            Assert.Equal(pending, loaded.PendingTime);
+            return;
+        }
+        var ex = Assert.Throws<InvalidDataException>(() => Snapshot.LoadMover(bad, out _, out _));
+        Assert.StartsWith("snapshot body.pendingTime", ex.Message);
+    }
+
+    /// <summary>The mover's four flags (contact, on walkable, water contact plane, sliding normal) each round-trip on their own.</summary>
+    [Theory]
+    [InlineData(true, false, false, false)]
+    [InlineData(false, true, false, false)]
+    [InlineData(false, false, true, false)]
+    [InlineData(false, false, false, true)]
+    public void TheMoversFlags_EachRoundTripOnTheirOwn(bool contact, bool onWalkable, bool water, bool sliding)
+    {
+        var state = MoverState.OnFloor(TestGeometry.At(1, 2, 3), 3f);
+        state.Contact = contact;
+        state.OnWalkable = onWalkable;
+        state.ContactPlaneIsWater = water;
+        state.SlidingNormalValid = sliding;
+        Snapshot.LoadMover(Snapshot.SaveMover(state, BodyState.Creature()), out var loaded, out _);
+        Assert.Equal((contact, onWalkable, water, sliding),
+            (loaded.Contact, loaded.OnWalkable, loaded.ContactPlaneIsWater, loaded.SlidingNormalValid));
+    }
+
     private static byte[] Patch(byte[] data, int at, byte[] with)
     {
         var copy = (byte[])data.Clone();

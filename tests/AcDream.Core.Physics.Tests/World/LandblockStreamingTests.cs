@@ -40,6 +40,20 @@ public class LandblockStreamingTests
     }
 
     [Fact]
+    public void Unload_DropsTheRowsInTheLandblocksEnvCells_AndUnregistersAnObjectIndoors()
+    {
+        // A small crate on the cottage room's floor is listed in the room (an env cell); unloading the landblock
+        // takes that row out too, so the crate, left with no row, is unregistered.
+        var world = Cottage.Build();
+        world.Objects.Register(77, Crate(0.2f), new Position(Cottage.RoomId, Cottage.RoomOrigin), 1f, PhysicsState.Static);
+        Assert.Contains(Cottage.RoomId, world.Objects.CellsOf(77));
+
+        world.UnloadLandblock(Lb);
+
+        Assert.False(world.Objects.Contains(77), "the crate indoors stayed registered after its landblock was unloaded");
+    }
+
+    [Fact]
     public void Unload_AnUnknownLandblock_ThrowsNamingIt()
     {
         var world = TestGeometry.FlatWorld();
