@@ -104,6 +104,11 @@ public static class DatJob
         allocWorld.LoadLandblock(landblock);
         long allocated = GC.GetAllocatedBytesForCurrentThread() - allocBefore;
         Console.WriteLine($"  allocated, cold load      {allocated / 1024.0,9:F1} KB");
+        // The anchor was measured outside on such a cottage landblock, not in this process: a ratio against it holds
+        // only on a quiet machine. Where the cold load's time goes: docs/performance.md, "Loading landblocks from DAT files".
+        Console.WriteLine("  anchor: ACE loads this landblock's physics cold in 0.45 ms holding 366 KB (measured outside); " +
+            "twice as fast is 0.22 ms. Cold = the DAT reads of every Environment and GfxObj and their conversion; " +
+            "warm = the landblock's own reads, its terrain and env cells, and the world's 64 land cells");
 
         // Bytes held: a world with the landblock loaded (and the cache it filled), against nothing loaded.
         files.Converted.Clear();
