@@ -168,8 +168,11 @@ public sealed class BspTree
                 continue;
             if (!PlaneOk(node.SplitPlane))
                 CheckPlane(node.SplitPlane, $"{name}.nodes[{i}].splitPlane");
-            foreach (var (child, field) in new[] { (node.Front, "front"), (node.Back, "back") })
+            // Front then back, without an array per node.
+            for (int side = 0; side < 2; side++)
             {
+                int child = side == 0 ? node.Front : node.Back;
+                string field = side == 0 ? "front" : "back";
                 if (child == -1)
                     continue;
                 if (child < 0 || child >= nodes.Count)
