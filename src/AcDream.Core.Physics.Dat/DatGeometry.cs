@@ -27,6 +27,8 @@ public static class DatGeometry
     /// </summary>
     public const int MaxBspNodes = 65_536;
 
+    private const string Unnamed = "polygon";
+
     /// <summary>
     /// Converts one DAT polygon: its vertices looked up in <paramref name="vertexArray"/> in <c>VertexIds</c>
     /// order, and its <c>SidesType</c> (retail <c>sides_type</c>): 0 single-sided, 2 both sides, any other
@@ -37,22 +39,29 @@ public static class DatGeometry
     /// <param name="polygon">The DAT polygon.</param>
     /// <param name="vertexArray">The owner's vertex array.</param>
     /// <exception cref="DatObjectException">A vertex id is not in the array, or our <see cref="Polygon"/> rejects it (fewer than 3 or more than <see cref="InputLimits.MaxPolygonVertices"/> vertices, not planar, not convex, a repeated vertex).</exception>
-    public static Polygon ToPolygon(uint objectId, string field, DatPolygon polygon, VertexArray vertexArray)
+    public static Polygon ToPolygon(uint objectId, string field, DatPolygon polygon, VertexArray vertexArray) =>
+        ConvertPolygon(objectId, field, -1, polygon, vertexArray);
+
+    // The polygon's field is <owner>.polygons[<key>] when the key is not -1. That string and the polygon's name are
+    // built only for a message: a landblock's load converts hundreds of polygons and refuses none.
+    private static string FieldOf(string owner, int key) => key < 0 ? owner : $"{owner}.polygons[{key}]";
+
+    private static Polygon ConvertPolygon(uint objectId, string owner, int key, DatPolygon polygon, VertexArray vertexArray)
     {
         if (polygon is null)
-            throw new DatObjectException(objectId, $"{field}: is null.");
+            throw new DatObjectException(objectId, $"{FieldOf(owner, key)}: is null.");
         if (vertexArray?.Vertices is null)
-            throw new DatObjectException(objectId, $"{field}: the vertex array is missing.");
+            throw new DatObjectException(objectId, $"{FieldOf(owner, key)}: the vertex array is missing.");
         var ids = polygon.VertexIds;
         int count = ids?.Count ?? 0;
         if (count < 3 || count > InputLimits.MaxPolygonVertices)
-            throw new DatObjectException(objectId, $"{field}.vertexIds: a polygon has 3 to {InputLimits.MaxPolygonVertices} vertices (InputLimits.MaxPolygonVertices), got {count}.");
+            throw new DatObjectException(objectId, $"{FieldOf(owner, key)}.vertexIds: a polygon has 3 to {InputLimits.MaxPolygonVertices} vertices (InputLimits.MaxPolygonVertices), got {count}.");
         var vertices = new Vector3[count];
         for (int i = 0; i < count; i++)
         {
             short id = ids![i];
             if (id < 0 || !vertexArray.Vertices.TryGetValue((ushort)id, out var vertex) || vertex is null)
-                throw new DatObjectException(objectId, $"{field}.vertexIds[{i}]: vertex {id} is not in the vertex array.");
+                throw new DatObjectException(objectId, $"{FieldOf(owner, key)}.vertexIds[{i}]: vertex {id} is not in the vertex array.");
             vertices[i] = vertex.Origin;
         }
         var sides = polygon.SidesType switch
@@ -63,11 +72,19 @@ public static class DatGeometry
         };
         try
         {
-            return new Polygon(vertices, sides, $"{DatObjectException.KindOf(objectId)} 0x{objectId:X8} {field}");
+            return new Polygon(vertices, sides, Unnamed);
+        }
+        catch (ArgumentException)
+        {
+        }
+        // Refused: converted again under its full name, which refuses it the same way, for the message.
+        try
+        {
+            return new Polygon(vertices, sides, $"{DatObjectException.KindOf(objectId)} 0x{objectId:X8} {FieldOf(owner, key)}");
         }
         catch (ArgumentException ex)
         {
-            throw new DatObjectException(objectId, $"{field}: {ex.Message}", ex);
+            throw new DatObjectException(objectId, $"{FieldOf(owner, key)}: {ex.Message}", ex);
         }
     }
 
@@ -93,7 +110,7 @@ public static class DatGeometry
         foreach (var (id, polygon) in polygons)
         {
             index.Add(id, list.Count);
-            list.Add(ToPolygon(objectId, $"{field}.polygons[{id}]", polygon, vertexArray));
+            list.Add(ConvertPolygon(objectId, field, id, polygon, vertexArray));
         }
         var order = Flatten(objectId, field, tree?.Root, n => n.PosNode, n => n.NegNode);
         var nodes = new BspNodeData[order.Count];
@@ -101,8 +118,7 @@ public static class DatGeometry
         for (int i = 0; i < order.Count; i++)
         {
             var node = order[i];
-            string at = $"{field}.nodes[{i}]";
-            var sphere = node.BoundingSphere ?? throw new DatObjectException(objectId, $"{at}.boundingSphere: is missing.");
+            var sphere = node.BoundingSphere ?? throw new DatObjectException(objectId, $"{field}.nodes[{i}].boundingSphere: is missing.");
             var bounds = new Sphere(sphere.Origin, sphere.Radius);
             if (node.Type == BSPNodeType.Leaf)
             {
@@ -111,7 +127,7 @@ public static class DatGeometry
                 for (int k = 0; k < ids.Count; k++)
                     leafPolygons[k] = index.TryGetValue(ids[k], out int p)
                         ? p
-                        : throw new DatObjectException(objectId, $"{at}.polygons[{k}]: polygon {ids[k]} is not among the tree's polygons.");
+                        : throw new DatObjectException(objectId, $"{field}.nodes[{i}].polygons[{k}]: polygon {ids[k]} is not among the tree's polygons.");
                 nodes[i] = new BspNodeData { IsLeaf = true, Solid = node.Solid != 0, Polygons = leafPolygons, Bounds = bounds };
             }
             else

@@ -166,9 +166,13 @@ public sealed class BspTree
             var node = nodes[i] ?? throw new ArgumentException($"{name}.nodes[{i}]: is null.", nameof(nodes));
             if (node.IsLeaf)
                 continue;
-            CheckPlane(node.SplitPlane, $"{name}.nodes[{i}].splitPlane");
-            foreach (var (child, field) in new[] { (node.Front, "front"), (node.Back, "back") })
+            if (!PlaneOk(node.SplitPlane))
+                CheckPlane(node.SplitPlane, $"{name}.nodes[{i}].splitPlane");
+            // Front then back, without an array per node.
+            for (int side = 0; side < 2; side++)
             {
+                int child = side == 0 ? node.Front : node.Back;
+                string field = side == 0 ? "front" : "back";
                 if (child == -1)
                     continue;
                 if (child < 0 || child >= nodes.Count)
@@ -213,8 +217,11 @@ public sealed class BspTree
             Sphere bounds;
             if (node.Bounds is { } given)
             {
-                Guard.Finite(given.Center, $"{name}.nodes[{i}].bounds.center");
-                Guard.NonNegative(given.Radius, $"{name}.nodes[{i}].bounds.radius");
+                // The field names are built only for a message (a DAT load checks every node).
+                if (!Guard.IsCoordinate(given.Center))
+                    Guard.Finite(given.Center, $"{name}.nodes[{i}].bounds.center");
+                if (!(given.Radius >= 0f) || !float.IsFinite(given.Radius))
+                    Guard.NonNegative(given.Radius, $"{name}.nodes[{i}].bounds.radius");
                 bounds = given;
             }
             else
@@ -227,6 +234,10 @@ public sealed class BspTree
         }
         return new BspTree(flat, polygonArray, indices.ToArray());
     }
+
+    // What CheckPlane accepts, tested first so that its field name is built only for the message.
+    private static bool PlaneOk(Plane plane) =>
+        Guard.IsCoordinate(plane.Normal) && MathF.Abs(plane.D) <= InputLimits.MaxCoordinate && !(plane.Normal.LengthSquared() < 1e-12f);
 
     private static void CheckPlane(Plane plane, string field)
     {

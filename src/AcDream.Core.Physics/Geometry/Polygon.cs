@@ -41,8 +41,10 @@ public sealed class Polygon
             throw new ArgumentException($"{name}: a polygon needs at least 3 vertices, got {vertices.Length}.", nameof(vertices));
         if (vertices.Length > InputLimits.MaxPolygonVertices)
             throw new ArgumentException($"{name}.vertices: a polygon has at most {InputLimits.MaxPolygonVertices} vertices (retail stores the count in a signed byte), got {vertices.Length}.", nameof(vertices));
+        // The field's name is built only for the message (a DAT load checks thousands of vertices).
         for (int i = 0; i < vertices.Length; i++)
-            Guard.Finite(vertices[i], $"{name}.vertices[{i}]");
+            if (!Guard.IsCoordinate(vertices[i]))
+                Guard.Finite(vertices[i], $"{name}.vertices[{i}]");
         if (!Enum.IsDefined(sides))
             throw new ArgumentException($"{name}.sides: unknown sidedness {(int)sides}.", nameof(sides));
         _vertices = vertices.ToArray();

@@ -21,6 +21,12 @@ internal static class Guard
             throw new ArgumentException($"{Name(field, suffix)}: must be a finite number, got {value}.", Name(field, suffix));
     }
 
+    /// <summary>Whether <see cref="Finite(Vector3, string, string?)"/> accepts the value: callers that name the field
+    /// with a built string test this first and build the name only for the message.</summary>
+    public static bool IsCoordinate(Vector3 value) =>
+        MathF.Abs(value.X) <= InputLimits.MaxCoordinate && MathF.Abs(value.Y) <= InputLimits.MaxCoordinate
+        && MathF.Abs(value.Z) <= InputLimits.MaxCoordinate;
+
     /// <summary>A point or vector: every component finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
     public static void Finite(Vector3 value, string field, string? suffix = null)
     {
