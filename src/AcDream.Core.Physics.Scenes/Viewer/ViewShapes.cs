@@ -78,9 +78,7 @@ internal static class ViewShapes
     private static void AddObjectShape(List<ViewShape> shapes, in ShadowEntry row, uint frameCellId)
     {
         // The rung of retail's dispatch ladder the object collides by: its BSP parts, else its cylspheres, else its spheres.
-        var rung = ObjectCollisions.BspOnlyDispatch(row.State, false, false) ? ShadowShapeKind.Bsp
-            : row.CylSphereCount > 0 ? ShadowShapeKind.Cylinder : ShadowShapeKind.Sphere;
-        bool collides = row.Kind == rung;
+        bool collides = row.Kind == ObjectCollisions.PlainDispatchRung(row);
         uint cell = row.Position.CellId;
         var shift = LandDefs.BlockOffset(frameCellId, cell);
         var shape = row.Shape;

@@ -102,9 +102,7 @@ public static class WorldOutline
 
     private static void AddObjectShape(List<OutlineShape> shapes, in ShadowEntry row, uint frameCellId)
     {
-        var rung = ObjectCollisions.BspOnlyDispatch(row.State, false, false) ? ShadowShapeKind.Bsp
-            : row.CylSphereCount > 0 ? ShadowShapeKind.Cylinder : ShadowShapeKind.Sphere;
-        bool collides = row.Kind == rung;
+        bool collides = row.Kind == ObjectCollisions.PlainDispatchRung(row);
         var shift = LandDefs.BlockOffset(frameCellId, row.Position.CellId);
         var shape = row.Shape;
         switch (shape.Kind)

@@ -448,8 +448,7 @@ public sealed class WorldQuery
     /// <summary>Whether the layers take this object, and which kind of its shapes it collides by (retail's dispatch rung).</summary>
     private static bool Selected(in ShadowEntry head, QueryLayers layers, uint ignoreId, out ShadowShapeKind rung)
     {
-        rung = ObjectCollisions.BspOnlyDispatch(head.State, missileIgnore: false, exemption: false) ? ShadowShapeKind.Bsp
-            : head.CylSphereCount > 0 ? ShadowShapeKind.Cylinder : ShadowShapeKind.Sphere;
+        rung = ObjectCollisions.PlainDispatchRung(head);
         if (head.EntityId == ignoreId && ignoreId != 0)
             return false;
         var needed = (head.State & PhysicsState.Ethereal) != 0 ? QueryLayers.EtherealObjects : QueryLayers.Objects;

@@ -23,6 +23,16 @@ internal static class ObjectCollisions
         (targetState & PhysicsState.HasPhysicsBsp) != 0 && !missileIgnore && !exemption;
 
     /// <summary>
+    /// The kind of shape an object collides by for a mover with neither a missile's ignore nor the PvP exemption
+    /// (the queries, the outline and the viewer): the dispatch ladder of FindObjectCollisions — its parts'
+    /// BSPs when it has HAS_PHYSICS_BSP, else its cylspheres, else its spheres.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static ShadowShapeKind PlainDispatchRung(in ShadowEntry head) =>
+        BspOnlyDispatch(head.State, missileIgnore: false, exemption: false) ? ShadowShapeKind.Bsp
+            : head.CylSphereCount > 0 ? ShadowShapeKind.Cylinder : ShadowShapeKind.Sphere;
+
+    /// <summary>
     /// The PvP exemption: two players pass through each other (nothing is tested) unless either is
     /// impenetrable or they are both PK or both PK-lite (retail CPhysicsObj::FindObjCollisions, acclient
     /// 0x0050F050; ACE names it `exemption`).
