@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Dat.Tests.Support;
 using System.IO;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Parity;
@@ -12,7 +13,7 @@ namespace AcDream.Core.Physics.Dat.Tests;
 /// </summary>
 public class SharedMotionDatParityTests
 {
-    private static string Folder => SharedFolder.Find("ace-motion")!;
+    private static string Folder => SharedFolders.Find("ace-motion")!;
 
     private static MotionTable JsonTable() => MotionTableReader.Parse(File.ReadAllText(Path.Combine(Folder, "table.json")));
 
@@ -27,7 +28,7 @@ public class SharedMotionDatParityTests
     public static TheoryData<string> Files()
     {
         var data = new TheoryData<string>();
-        if (SharedFolder.Find("ace-motion") is { } dir)
+        if (SharedFolders.Find("ace-motion") is { } dir)
             foreach (string file in Directory.GetFiles(dir, "*.json.gz").OrderBy(f => f, StringComparer.Ordinal))
                 data.Add(Path.GetFileName(file));
         return data;

@@ -11,15 +11,7 @@ namespace AcDream.Core.Physics.Dat.Tests;
 /// </summary>
 public class SharedParityThroughDatWorldTests
 {
-    public static TheoryData<string, string> Files()
-    {
-        var data = new TheoryData<string, string>();
-        foreach (string folder in new[] { "ace-parity", "real-cells" })
-            if (SharedFolders.Find(folder) is { } dir)
-                foreach (string file in Directory.GetFiles(dir, "*.json.gz").OrderBy(f => f, StringComparer.Ordinal))
-                    data.Add(folder, Path.GetFileName(file));
-        return data;
-    }
+    public static TheoryData<string, string> Files() => SharedFolders.CollisionParityFiles();
 
     [Theory]
     [MemberData(nameof(Files))]

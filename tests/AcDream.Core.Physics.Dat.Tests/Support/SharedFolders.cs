@@ -13,4 +13,15 @@ internal static class SharedFolders
         }
         return null;
     }
+
+    /// <summary>Each collision parity file of shared/ace-parity and shared/real-cells, as (folder, file name), in name order.</summary>
+    public static TheoryData<string, string> CollisionParityFiles()
+    {
+        var data = new TheoryData<string, string>();
+        foreach (string folder in new[] { "ace-parity", "real-cells" })
+            if (Find(folder) is { } dir)
+                foreach (string file in Directory.GetFiles(dir, "*.json.gz").OrderBy(f => f, StringComparer.Ordinal))
+                    data.Add(folder, Path.GetFileName(file));
+        return data;
+    }
 }
