@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Tests.Motion;
 using AcDream.Core.Physics.Dat.Tests.Support;
 using System.IO;
 using AcDream.Core.Physics.Motion;

@@ -1,6 +1,8 @@
 using AcDream.Core.Physics.Motion;
 
-namespace AcDream.Core.Physics.Dat.Tests;
+namespace AcDream.Core.Physics.Tests.Motion;
+
+// Also compiled into the Dat tests (linked), which compare tables read through DAT files.
 
 /// <summary>Two motion tables are the same to the bit: every key, bitfield, flag, animation, frame range, framerate, vector and root frame.</summary>
 internal static class MotionTableAssert
