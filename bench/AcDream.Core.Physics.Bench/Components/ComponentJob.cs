@@ -5,6 +5,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Transitions.Responses;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Bench.Components;
@@ -131,7 +132,7 @@ public static class ComponentJob
                 case "transition": Setup(); _sink += _t.FindTransitionalPosition() ? 1 : 0; break;
                 case "collect": _sink += PhysicsEngine.Collect(_t, true, _state).Next.Position.Frame.Origin.Y; break;
                 case "cell-array": _sink += _t.BuildCellArray(true)!.Id; break;
-                case "land": _sink += (int)_cell.FindEnvCollisions(_t); break;
+                case "land": _sink += (int)CellCollisions.FindEnvCollisions(_cell, _t); break;
                 case "objects": _sink += (int)ObjectCollisions.FindInCell(_t, _cell.Id); break;
                 case "door": _sink += (int)PartCollision.Collide(_t, _door.Shape.Model!, _door.PartPosition, _door.Shape.ModelScale); break;
                 case "local-space": path.CacheLocalSpaceSphere(_door.PartPosition, 1f); break;

@@ -106,7 +106,7 @@ public sealed class BspTree
     /// <summary>
     /// The box of every polygon's vertices, in the tree's space (not retail). A sphere that does not reach
     /// it touches no polygon, and every polygon test of a move (not the solid tests of placement) then
-    /// misses: see <see cref="Shapes.PartCollision"/>.
+    /// misses: see the part test that uses it (<c>PartCollision.MayTouchPolygons</c>).
     /// </summary>
     internal Vector3 PolygonsMin { get; }
     /// <summary>See <see cref="PolygonsMin"/>.</summary>

@@ -208,7 +208,7 @@ public sealed class WorldQuery
         if (!LandDefs.IsLandCell(point.CellId))
         {
             probe[0] = new Sphere(point.Origin, 0f);
-            if (graph.FindCellList(point, probe, _cellArray, findContaining: true, path: null) is { } indoor)
+            if (graph.FindCellList(point, probe, _cellArray, findContaining: true, out _) is { } indoor)
             {
                 found = Relabel(point, indoor.Id);
                 return true;
@@ -222,7 +222,7 @@ public sealed class WorldQuery
         {
             var local = Relabel(point, landId);
             probe[0] = new Sphere(local.Origin, 0f);
-            if (graph.FindCellList(local, probe, _cellArray, findContaining: true, path: null) is { } cell)
+            if (graph.FindCellList(local, probe, _cellArray, findContaining: true, out _) is { } cell)
             {
                 found = Relabel(point, cell.Id);
                 return true;

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Transitions;
 
@@ -238,11 +239,11 @@ internal static class ObjectCollisions
                 path.CacheLocalSpaceForCylinder(row.Position);
                 var cyl = shape.Cylinder;
                 cyl.LowPoint = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
-                return CylSphereCollision.IntersectsSphere(cyl, transition);
+                return CylSphereResponses.IntersectsSphere(cyl, transition);
             default:
                 var sphere = shape.Sphere;
                 sphere.Center = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
-                return SphereCollision.IntersectsSphere(sphere, transition, isCreature);
+                return SphereResponses.IntersectsSphere(sphere, transition, isCreature);
         }
     }
 

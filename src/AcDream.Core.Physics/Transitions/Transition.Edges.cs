@@ -1,6 +1,7 @@
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Transitions;
 
@@ -119,6 +120,6 @@ internal sealed partial class Transition
         var moved = path.GlobalSphere[0].Center - path.GlobalCurrCenter[0].Center + path.CurToCheckBlockOffset();
         if (Vector3.Dot(edgeNormal, moved) > 0.0f)
             edgeNormal = -edgeNormal;
-        return SphereCollision.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius, ref edgeNormal, path.GlobalCurrCenter[0].Center);
+        return SphereResponses.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius, ref edgeNormal, path.GlobalCurrCenter[0].Center);
     }
 }

@@ -2,6 +2,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Transitions;
 
@@ -61,7 +62,7 @@ internal sealed partial class Transition
                 }
                 else
                 {
-                    state = SphereCollision.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius,
+                    state = SphereResponses.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius,
                         ref path.NegCollisionNormal, path.GlobalCurrCenter[0].Center);
                 }
                 continue;
@@ -246,12 +247,12 @@ internal sealed partial class Transition
     /// </summary>
     internal TransitionState FindCollisions(Cell cell)
     {
-        var state = cell.FindEnvCollisions(this);
+        var state = CellCollisions.FindEnvCollisions(cell, this);
         if (state != TransitionState.OK)
             return state;
         if (cell is LandCell { Building: { } building })
         {
-            state = building.FindCollisions(this);
+            state = CellCollisions.FindBuildingCollisions(building, this);
             if (state != TransitionState.OK)
                 return state;
         }

@@ -1,5 +1,6 @@
 using System.Numerics;
 using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Transitions;
 
@@ -72,7 +73,7 @@ internal sealed partial class Transition
         var path = SpherePath;
         CollisionInfo.ClearContactPlane();
         path.StepUp = false;
-        return SphereCollision.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius,
+        return SphereResponses.SlideSphere(this, path.GlobalSphere[0].Center, path.GlobalSphere[0].Radius,
             ref path.StepUpNormal, path.GlobalCurrCenter[0].Center);
     }
 

@@ -448,7 +448,9 @@ internal sealed partial class Transition
         path.HitsInteriorCell = false;
         if (_aloneCell is not null && CellAloneAtCheck(findContaining, out var holder))
             return holder;
-        return World.Cells.FindCellList(path.CheckPos, path.GlobalSphere[..path.NumSphere], CellArray, findContaining, path);
+        var found = World.Cells.FindCellList(path.CheckPos, path.GlobalSphere[..path.NumSphere], CellArray, findContaining, out bool hitsInteriorCell);
+        path.HitsInteriorCell = hitsInteriorCell;
+        return found;
     }
 
     /// <summary>Sets the contact plane carried from the previous frame (retail init_contact_plane).</summary>

@@ -217,7 +217,7 @@ internal static class ViewerClearance
     /// untested (the mover itself, an ethereal object that ignores collisions, a creature for the viewer,
     /// a missile or PvP exemption) are left out, and of the others only the rows of the dispatched rung
     /// count, each by the box its test needs the sphere to meet: a BSP part's polygon box
-    /// (<see cref="Shapes.PartCollision.MayTouchPolygons"/>; its placed bounding sphere when the object is an
+    /// (<see cref="Responses.PartCollision.MayTouchPolygons"/>; its placed bounding sphere when the object is an
     /// ethereal obstruction, which that cull does not apply to), a cylinder's upright slab, a sphere's bounds,
     /// these last two as the registry's reach box takes them (<see cref="ShadowEntry.Margin"/> wider).
     /// </summary>

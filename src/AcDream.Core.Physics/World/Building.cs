@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.World;
@@ -32,16 +31,4 @@ public sealed class Building
     public Position Position { get; }
     /// <summary>The env cells the doorways lead into.</summary>
     public ReadOnlySpan<uint> EntranceCells => _entranceCells;
-
-    /// <summary>Retail find_building_collisions: the shell, tested as an object part, with the building flag set.</summary>
-    internal TransitionState FindCollisions(Transition transition)
-    {
-        var path = transition.SpherePath;
-        path.BuildingCheck = true;
-        var state = PartCollision.Collide(transition, Shell, Position, 1.0f);
-        path.BuildingCheck = false;
-        if (state != TransitionState.OK && (transition.ObjectInfo.State & ObjectInfoState.Contact) == 0)
-            transition.CollisionInfo.CollidedWithEnvironment = true;
-        return state;
-    }
 }

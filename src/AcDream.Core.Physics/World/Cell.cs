@@ -1,9 +1,8 @@
-using AcDream.Core.Physics.Transitions;
 namespace AcDream.Core.Physics.World;
 
 /// <summary>
 /// A cell of the world (retail CObjCell): an outdoor LandCell or an indoor
-/// EnvCell. A cell collides a sphere path with its own geometry; the objects in it live
+/// EnvCell. A cell exposes its own geometry (the transition collides with it); the objects in it live
 /// in the ShadowObjectRegistry.
 /// </summary>
 public abstract class Cell
@@ -13,9 +12,6 @@ public abstract class Cell
 
     /// <summary>The retail cell id (landblock &lt;&lt; 16 | cell).</summary>
     public uint Id { get; }
-
-    /// <summary>Collides the transition's check spheres with this cell's geometry (retail find_env_collisions).</summary>
-    internal abstract TransitionState FindEnvCollisions(Transition transition);
 
     /// <summary>
     /// How far a landblock-local point lies outside this cell, in metres (0 inside), roughly: used only to

@@ -4,7 +4,6 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.World;
 
@@ -177,9 +176,12 @@ public sealed class CellGraph
     /// Retail find_cell_list: fills <paramref name="cells"/> with the cells the spheres (landblock space of
     /// <paramref name="position"/>'s cell) touch. When <paramref name="findContaining"/> is set, returns the
     /// cell holding sphere 0's centre, preferring an indoor cell; otherwise returns null.
+    /// <paramref name="hitsInteriorCell"/> tells whether an indoor cell is listed or holds the centre (retail
+    /// sets the path's hits_interior_cell there).
     /// </summary>
-    internal Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, SpherePath? path)
+    internal Cell? FindCellList(in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, bool findContaining, out bool hitsInteriorCell)
     {
+        hitsInteriorCell = false;
         cells.Clear();
         uint startId = position.CellId;
         Cell? start;
@@ -190,7 +192,7 @@ public sealed class CellGraph
         if (!LandDefs.IsLandCell(startId))
         {
             start = Get(startId);
-            if (path is not null) path.HitsInteriorCell = true;
+            hitsInteriorCell = true;
             if (start is not null) cells.Add(start);
         }
         else
@@ -231,7 +233,7 @@ public sealed class CellGraph
             {
                 anyIndoor = true;
             }
-            AddTransitCells(cell, position, spheres, cells, path, ref outsideAdded);
+            AddTransitCells(cell, position, spheres, cells, ref hitsInteriorCell, ref outsideAdded);
         }
         if (!findContaining)
             return null;
@@ -239,7 +241,7 @@ public sealed class CellGraph
             for (int i = 0; i < cells.Count; i++)
                 if (cells[i] is EnvCell env && ContainsCentre(env, centre, startId))
                 {
-                    if (path is not null) path.HitsInteriorCell = true;
+                    hitsInteriorCell = true;
                     return env;
                 }
         return landHolder;
@@ -259,7 +261,7 @@ public sealed class CellGraph
     /// the search): at least one sphere, each in the cell's square (the spheres are in the landblock space of
     /// the land cell, which is the search's start cell) at least its radius (and 1 mm) from every edge. Then a
     /// search from this cell, if it has no building, lists this cell alone, holds the centre where its
-    /// <see cref="LandCell.ContainsPoint"/> does and leaves <see cref="SpherePath.HitsInteriorCell"/> alone.
+    /// <see cref="LandCell.ContainsPoint"/> does and leaves its interior-cell answer false.
     /// </summary>
     /// <remarks>
     /// Why exact, per sphere (x; y is the same), with w the square's west edge (24 × the cell column, exact):
@@ -291,7 +293,7 @@ public sealed class CellGraph
     private static bool ContainsCentre(EnvCell env, Vector3 centre, uint startId) =>
         env.ContainsPoint(centre - LandDefs.BlockOffset(startId, env.Id));
 
-    private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path, ref bool outsideAdded)
+    private void AddTransitCells(Cell cell, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, ref bool hitsInteriorCell, ref bool outsideAdded)
     {
         if (cell is LandCell land)
         {
@@ -303,7 +305,7 @@ public sealed class CellGraph
             if (land.Building is { } building)
                 foreach (uint id in building.EntranceCells)
                     if (Get(id) is EnvCell entrance)
-                        AddIfSphereInside(entrance, position, spheres, cells, path);
+                        AddIfSphereInside(entrance, position, spheres, cells, ref hitsInteriorCell);
             return;
         }
         if (cell is not EnvCell env)
@@ -324,7 +326,7 @@ public sealed class CellGraph
                 continue;
             }
             if (Get(portal.OtherCellId) is EnvCell other)
-                AddIfSphereInside(other, position, spheres, cells, path);
+                AddIfSphereInside(other, position, spheres, cells, ref hitsInteriorCell);
         }
         if (checkOutside && !outsideAdded)
         {
@@ -333,14 +335,14 @@ public sealed class CellGraph
         }
     }
 
-    private static void AddIfSphereInside(EnvCell env, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, SpherePath? path)
+    private static void AddIfSphereInside(EnvCell env, in Position position, ReadOnlySpan<Sphere> spheres, CellArray cells, ref bool hitsInteriorCell)
     {
         var offset = LandDefs.BlockOffset(position.CellId, env.Id);
         foreach (var sphere in spheres)
         {
             if (env.IntersectsSphere(new Sphere(sphere.Center - offset, sphere.Radius)) == BoundingType.Outside)
                 continue;
-            if (path is not null) path.HitsInteriorCell = true;
+            hitsInteriorCell = true;
             cells.Add(env);
             return;
         }

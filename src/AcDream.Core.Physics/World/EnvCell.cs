@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.World;
@@ -107,28 +106,4 @@ public sealed class EnvCell : Cell
     /// empty, of its containment BSP; when both are empty, from the cell's origin).
     /// </summary>
     internal override float DistanceOutside(Vector3 point) => MathF.Max(Vector3.Distance(point, Bounds.Center) - Bounds.Radius, 0f);
-
-    /// <inheritdoc />
-    internal override TransitionState FindEnvCollisions(Transition transition)
-    {
-        var path = transition.SpherePath;
-        path.ObstructionEthereal = false;
-        if (PhysicsBsp is null)
-            return TransitionState.OK;
-        TransitionState state;
-        // A placement test known to be Collided (SpherePath.KnownSolidHit: the wall a step-up just failed
-        // against) is not run again.
-        if (path.KnownSolidHit(this, Position, 1.0f))
-            state = TransitionState.Collided;
-        else
-        {
-            path.CacheLocalSpaceSphere(Position, 1.0f);
-            state = path.InsertType == InsertType.InitialPlacement
-                ? BspQuery.PlacementInsert(PhysicsBsp, transition)
-                : BspQuery.FindCollisions(PhysicsBsp, transition, 1.0f, this);
-        }
-        if (state != TransitionState.OK && (transition.ObjectInfo.State & ObjectInfoState.Contact) == 0)
-            transition.CollisionInfo.CollidedWithEnvironment = true;
-        return state;
-    }
 }

@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.World;
 
@@ -85,6 +84,9 @@ public sealed class LandCell : Cell
         }
     }
 
+    /// <summary>Whether the cell's whole landblock is water (<see cref="Terrain.WaterType"/>): then the landblock stops movers (retail find_env_collisions, acclient.c:355030).</summary>
+    internal bool BlockEntirelyWater => _blockEntirelyWater;
+
     /// <summary>The south-west corner of the cell's square, landblock-local (X, Y; 24 m × the cell's column and row, exact).</summary>
     internal Vector2 SouthWest => new(_west, _south);
 
@@ -119,45 +121,4 @@ public sealed class LandCell : Cell
             return 0f;
         return System.MathF.Sqrt(dx * dx + dy * dy);
     }
-
-    /// <inheritdoc />
-    /// <remarks>
-    /// Retail CLandCell::find_env_collisions (acclient.c:354991): the terrain triangle under the mover's low
-    /// point; over it, a landblock that is entirely water stops every mover but the camera and a missile
-    /// (acclient.c:355030), and otherwise the sphere is validated against the triangle's plane sunk by the
-    /// water depth, the plane counting as water when the cell has any (acclient.c:355034, :355043).
-    /// </remarks>
-    internal override TransitionState FindEnvCollisions(Transition transition)
-    {
-        var path = transition.SpherePath;
-        if ((path.CheckPos.CellId >> 16) == (Id >> 16))
-        {
-            // The usual case, the check position in this cell's landblock: no offset, so sphere 0 is passed as
-            // it is (subtracting a zero offset would change no bit) and not copied.
-            var low = path.GlobalLowPoint;
-            var triangle = FindTerrainPolygon(low);
-            if (triangle is null)
-                return TransitionState.OK;
-            if (StopsInWater(transition))
-                return TransitionState.Collided;
-            return transition.ValidateWalkable(path.GlobalSphere[0], triangle.Plane, WaterType != WaterType.NotWater, WaterDepth(low), Id);
-        }
-        var blockOffset = LandDefs.BlockOffset(path.CheckPos.CellId, Id);
-        var local = path.GlobalLowPoint - blockOffset;
-        var walkable = FindTerrainPolygon(local);
-        if (walkable is null)
-            return TransitionState.OK;
-        if (StopsInWater(transition))
-            return TransitionState.Collided;
-        var check = path.GlobalSphere[0];
-        check.Center -= blockOffset;
-        return transition.ValidateWalkable(check, walkable.Plane, WaterType != WaterType.NotWater, WaterDepth(local), Id);
-    }
-
-    // find_env_collisions' all-water stop (acclient.c:355030): the landblock (not the cell) is entirely water
-    // and the mover is neither the camera (OBJECTINFO IS_VIEWER) nor a missile (PhysicsState MISSILE).
-    private bool StopsInWater(Transition transition) =>
-        _blockEntirelyWater
-        && (transition.ObjectInfo.State & ObjectInfoState.IsViewer) == 0
-        && (transition.ObjectInfo.PhysicsState & PhysicsState.Missile) == 0;
 }

@@ -64,7 +64,7 @@ internal readonly struct ShadowEntry
     public readonly Vector3 PlacedPoint;
     /// <summary>
     /// BSP rows: a box, in the object's landblock space, holding every polygon of the part as placed and
-    /// scaled, widened by a margin far above float rounding (see <see cref="Shapes.PartCollision"/>).
+    /// scaled, widened by a margin far above float rounding (see <c>PartCollision.MayTouchPolygons</c>).
     /// </summary>
     public readonly Vector3 PolygonsMin, PolygonsMax;
     /// <summary>

@@ -516,7 +516,7 @@ public sealed class ShadowObjectRegistry
 
     private void AddFound(Record record, ReadOnlySpan<Sphere> spheres, List<uint> cells)
     {
-        _graph.FindCellList(record.Position, spheres, _scratch, findContaining: false, path: null);
+        _graph.FindCellList(record.Position, spheres, _scratch, findContaining: false, out _);
         for (int i = 0; i < _scratch.Count; i++)
             if (!cells.Contains(_scratch[i].Id))
                 cells.Add(_scratch[i].Id);

@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 
@@ -15,11 +16,11 @@ public class BspQueryTests
         var tree = BoxFixtures.SolidBox(out _);
         var inside = BoxFixtures.MakeTransition(Vector3.Zero, new Vector3(0.2f, 0, 0), 0.3f);
         inside.SpherePath.InsertType = InsertType.Placement;
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, inside, 1f));
+        Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(tree, inside, 1f));
 
         var outside = BoxFixtures.MakeTransition(Vector3.Zero, new Vector3(3f, 0, 0), 0.3f);
         outside.SpherePath.InsertType = InsertType.Placement;
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(tree, outside, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(tree, outside, 1f));
     }
 
     [Fact]
@@ -30,7 +31,7 @@ public class BspQueryTests
         var path = t.SpherePath;
         path.StepDown = true;
         path.StepDownAmt = 0.3f;
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 1f));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(tree, t, 1f));
         Assert.Equal(1.5f, path.CheckPos.Origin.Z, 5);
         Assert.Equal(1f / 3f, path.WalkInterp, 5);
         Assert.Same(faces[4], path.Walkable);
@@ -57,7 +58,7 @@ public class BspQueryTests
         path.CacheLocalSpaceSphere(new Position(BoxFixtures.Cell, Vector3.Zero), 2f);
         path.StepDown = true;
         path.StepDownAmt = 0.3f;
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 2f));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(tree, t, 2f));
         Assert.Equal(2.5f, path.CheckPos.Origin.Z, 5);
         Assert.Equal(1f / 3f, path.WalkInterp, 5);
         Assert.Same(faces[4], path.Walkable);
@@ -69,7 +70,7 @@ public class BspQueryTests
         var t = BoxFixtures.MakeTransition(new Vector3(3, 0, 1.6f), new Vector3(3, 0, 1.3f), 0.5f);
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.3f;
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         Assert.Equal(1.3f, t.SpherePath.CheckPos.Origin.Z);
     }
 
@@ -79,18 +80,18 @@ public class BspQueryTests
         var tree = BoxFixtures.SolidBox(out _);
         var on = BoxFixtures.MakeTransition(new Vector3(0, 0, 1.45f), new Vector3(0, 0, 1.45f), 0.5f);
         on.SpherePath.CheckWalkable = true;
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, on, 1f));
+        Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(tree, on, 1f));
 
         var off = BoxFixtures.MakeTransition(new Vector3(1.4f, 0, 1.45f), new Vector3(1.4f, 0, 1.45f), 0.5f);
         off.SpherePath.CheckWalkable = true;
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(tree, off, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(tree, off, 1f));
     }
 
     [Fact]
     public void NotInContact_HitRecordsStepUpCandidate()
     {
         var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         var path = t.SpherePath;
         Assert.True(path.Collide);
         Assert.Equal(Vector3.UnitX, path.StepUpNormal);
@@ -102,7 +103,7 @@ public class BspQueryTests
     {
         // Sphere 0 at z = −1.6 passes under the box (0.67 from its bottom edge); sphere 1 at z = −0.6 hits the +X face.
         var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, -1.6f), new Vector3(1.3f, 0, -1.6f), 0.4f, twoSpheres: true);
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         Assert.True(t.CollisionInfo.CollisionNormalValid);
         Assert.Equal(Vector3.UnitX, t.CollisionInfo.CollisionNormal);
         Assert.False(t.SpherePath.Collide);
@@ -113,7 +114,7 @@ public class BspQueryTests
     {
         // Retail quirk: "|| hit_poly" — a polygon hit only from behind still records a step-up candidate.
         var t = BoxFixtures.MakeTransition(new Vector3(1.2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         Assert.True(t.SpherePath.Collide);
     }
 
@@ -121,7 +122,7 @@ public class BspQueryTests
     public void Clear_IsOk()
     {
         var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(2.5f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         Assert.False(t.SpherePath.Collide);
     }
 
@@ -132,7 +133,7 @@ public class BspQueryTests
         // (Were it to graze two faces, the last one in the leaf would be reported, as in retail.)
         var t = BoxFixtures.MakeTransition(new Vector3(1.1f, 0, 0.5f), new Vector3(1.2f, 0, 0.5f), 0.3f, twoSpheres: true);
         t.ObjectInfo.State = ObjectInfoState.Contact;
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         var path = t.SpherePath;
         Assert.True(path.NegPolyHit);
         Assert.True(path.NegStepUp);
@@ -144,7 +145,7 @@ public class BspQueryTests
     {
         var t = BoxFixtures.MakeTransition(new Vector3(1.2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
         t.ObjectInfo.State = ObjectInfoState.Contact;
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         Assert.False(t.SpherePath.NegPolyHit);
     }
 
@@ -154,7 +155,7 @@ public class BspQueryTests
         var tree = BoxFixtures.SolidBox(out var faces);
         var t = BoxFixtures.MakeTransition(new Vector3(0, 0, 1.6f), new Vector3(0, 0, 1.3f), 0.5f);
         t.SpherePath.Collide = true;
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 1f));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(tree, t, 1f));
         Assert.Equal(1.5f, t.SpherePath.CheckPos.Origin.Z, 5);
         Assert.Same(faces[4], t.SpherePath.Walkable);
         Assert.Equal(-1f, t.CollisionInfo.ContactPlane.D, 5);
@@ -165,7 +166,7 @@ public class BspQueryTests
     {
         var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(1.2f, 0, 0), 0.5f);
         t.ObjectInfo.State = ObjectInfoState.PathClipped;
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         Assert.Equal(Vector3.UnitX, t.CollisionInfo.CollisionNormal);
         Assert.Equal(1.2f, t.SpherePath.CheckPos.Origin.X);
     }
@@ -175,7 +176,7 @@ public class BspQueryTests
     {
         var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(1.2f, 0, 0), 0.5f);
         t.ObjectInfo.State = ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip;
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         // Touch time (0.5 − 2) / −1.8 = 5/6 puts the centre at x = 1.5, clear of the face; bisection keeps it.
         Assert.Equal(1.5f, t.SpherePath.CheckPos.Origin.X, 4);
         Assert.Equal(Vector3.UnitX, t.CollisionInfo.CollisionNormal);
@@ -198,11 +199,11 @@ public class BspQueryTests
     {
         var tree = BoxFixtures.SolidBox(out _);
         var t = BoxFixtures.MakeTransition(new Vector3(1.3f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.Adjusted, BspQuery.PlacementInsert(tree, t));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.PlacementInsert(tree, t));
         Assert.Equal(1.5f, t.SpherePath.CheckPos.Origin.X, 5);
 
         var clear = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(3f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.OK, BspQuery.PlacementInsert(tree, clear));
+        Assert.Equal(TransitionState.OK, BspResponses.PlacementInsert(tree, clear));
         Assert.Equal(3f, clear.SpherePath.CheckPos.Origin.X);
     }
 
@@ -213,7 +214,7 @@ public class BspQueryTests
         // adjust_to_placement_poly cancel and the sphere is pushed to a radius in front of the face: x = 1.5.
         var tree = BoxFixtures.SolidBox(out _);
         var t = BoxFixtures.MakeTransition(new Vector3(0.8f, 0, 0), new Vector3(0.8f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.Adjusted, BspQuery.PlacementInsert(tree, t));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.PlacementInsert(tree, t));
         Assert.Equal(1.5f, t.SpherePath.CheckPos.Origin.X, 5);
     }
 
@@ -226,7 +227,7 @@ public class BspQueryTests
         long allocated = Allocations.PerRound(
             () =>
             {
-                BspQuery.FindCollisions(tree, t, 1f);
+                BspResponses.FindCollisions(tree, t, 1f);
                 BspQuery.SphereIntersectsSolid(tree, sphere);
             },
             () =>
@@ -234,7 +235,7 @@ public class BspQueryTests
                 for (int i = 0; i < 100; i++)
                 {
                     t.SpherePath.Collide = false;
-                    BspQuery.FindCollisions(tree, t, 1f);
+                    BspResponses.FindCollisions(tree, t, 1f);
                     BspQuery.SphereIntersectsSolid(tree, sphere);
                     BspQuery.PointIntersectsSolid(tree, sphere.Center);
                     BspQuery.SphereIntersectsCellBsp(tree, sphere);
@@ -252,7 +253,7 @@ public class BspQueryTests
         // false), with the reversed normal −X.
         var t = BoxFixtures.MakeTransition(new Vector3(1.1f, 0, -1.6f), new Vector3(1.2f, 0, -1.6f), 0.3f, twoSpheres: true);
         t.ObjectInfo.State = ObjectInfoState.Contact;
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f));
         var path = t.SpherePath;
         Assert.True(path.NegPolyHit);
         Assert.False(path.NegStepUp);

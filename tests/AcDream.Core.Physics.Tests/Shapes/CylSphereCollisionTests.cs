@@ -3,6 +3,7 @@ using static AcDream.Core.Physics.Tests.Shapes.ShapeTestRig;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Shapes;
 
@@ -41,14 +42,14 @@ public class CylSphereCollisionTests
     {
         var t = Mover(new Vector3(x, 0, 1), new Vector3(x, 0, 1));
         t.SpherePath.InsertType = InsertType.Placement;
-        Assert.Equal(expected, CylSphereCollision.IntersectsSphere(Post, t));
+        Assert.Equal(expected, CylSphereResponses.IntersectsSphere(Post, t));
     }
 
     [Fact]
     public void CollisionNormal_StartOutsideTheCircle_IsRadial()
     {
         var t = Mover(new Vector3(-2, 1, 1), new Vector3(-1.2f, 0.2f, 1));
-        bool definite = CylSphereCollision.CollisionNormal(Post, t.SpherePath, Ball, new Vector3(-1.2f, 0.2f, 1), Radsum, 0, out var normal);
+        bool definite = CylSphereCollision.CollisionNormal(Post, t.SpherePath.GlobalCurrCenter[0].Center, Ball, new Vector3(-1.2f, 0.2f, 1), Radsum, out var normal);
         Assert.Equal(new Vector3(-2, 1, 0), normal);
         Assert.True(definite); // the current position already overlaps the Z span
     }
@@ -57,11 +58,11 @@ public class CylSphereCollisionTests
     public void CollisionNormal_StartInsideTheCircle_IsPlusZFallingAndMinusZRising()
     {
         var falling = Mover(new Vector3(0.2f, 0, 3), new Vector3(0.2f, 0, 2.4f));
-        Assert.True(CylSphereCollision.CollisionNormal(Post, falling.SpherePath, Ball, new Vector3(0.2f, 0, 2.4f), Radsum, 0, out var down));
+        Assert.True(CylSphereCollision.CollisionNormal(Post, falling.SpherePath.GlobalCurrCenter[0].Center, Ball, new Vector3(0.2f, 0, 2.4f), Radsum, out var down));
         Assert.Equal(Vector3.UnitZ, down);
 
         var rising = Mover(new Vector3(0.2f, 0, -1), new Vector3(0.2f, 0, -0.4f));
-        Assert.True(CylSphereCollision.CollisionNormal(Post, rising.SpherePath, Ball, new Vector3(0.2f, 0, -0.4f), Radsum, 0, out var up));
+        Assert.True(CylSphereCollision.CollisionNormal(Post, rising.SpherePath.GlobalCurrCenter[0].Center, Ball, new Vector3(0.2f, 0, -0.4f), Radsum, out var up));
         Assert.Equal(-Vector3.UnitZ, up);
     }
 
@@ -71,7 +72,7 @@ public class CylSphereCollisionTests
         // From (-2,0,0.5) to (-1.3,0.2,0.5): the radial normal is -X, the floor +Z, so the slide keeps only the
         // move's Y (cross(-X, +Z) = +Y) and never enters the wall.
         var t = OnFloor(new Vector3(-2, 0, 0.5f), new Vector3(-1.3f, 0.2f, 0.5f), stepUpHeight: 0.1f);
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         Assert.Equal(TransitionState.Slid, state);
         Near(-Vector3.UnitX, t.CollisionInfo.CollisionNormal);
@@ -82,7 +83,7 @@ public class CylSphereCollisionTests
     public void Airborne_LandingOnTheTopCap_RecordsPlusZStepUpCandidate()
     {
         var t = Mover(new Vector3(0.2f, 0, 3), new Vector3(0.2f, 0, 2.4f));
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Assert.True(t.SpherePath.Collide);
@@ -96,7 +97,7 @@ public class CylSphereCollisionTests
         // Falling 0.6 and sunk to 2.4: backed up by 0.1 (1/6 of the move) so the bottom sits on z = 2.
         var t = Mover(new Vector3(0.2f, 0, 3), new Vector3(0.2f, 0, 2.4f));
         t.SpherePath.Collide = true;
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(0.2f, 0, 2.5f), CheckOrigin(t));
@@ -111,7 +112,7 @@ public class CylSphereCollisionTests
         var t = Mover(new Vector3(0, 0, 2.8f), new Vector3(0, 0, 2.3f));
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         // Lift 2 + 0.5 - 2.3 = 0.2, i.e. 0.4 of the 0.5 step: walk_interp 0.6.
         Assert.Equal(TransitionState.Adjusted, state);
@@ -135,7 +136,7 @@ public class CylSphereCollisionTests
         var t = Mover(new Vector3(0, 0, z + 0.5f), new Vector3(0, 0, z));
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
-        Assert.Equal(expected, CylSphereCollision.IntersectsSphere(Post, t));
+        Assert.Equal(expected, CylSphereResponses.IntersectsSphere(Post, t));
         if (expected == TransitionState.Adjusted)
         {
             Assert.Equal(2.5f, CheckOrigin(t).Z, 4);
@@ -159,7 +160,7 @@ public class CylSphereCollisionTests
         var t = Mover(new Vector3(0, 0, 2.6556098461151123f), new Vector3(0, 0, 2.1556098461151123f), radius: 0.48f);
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
-        var state = CylSphereCollision.IntersectsSphere(new CylSphere(Vector3.Zero, 1f, 1.7f), t);
+        var state = CylSphereResponses.IntersectsSphere(new CylSphere(Vector3.Zero, 1f, 1.7f), t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Assert.Equal(0.95121961832046509f, t.SpherePath.WalkInterp);
@@ -173,7 +174,7 @@ public class CylSphereCollisionTests
         // From x=-3 to x=-1.2 at mid height: contact at XY distance radsum + EPSILON = 1.5, reached after
         // moving 1.5 of 1.8, t = 5/6; the sphere is put at x = -1.5 with the radial normal -X.
         var t = Mover(new Vector3(-3, 0, 1), new Vector3(-1.2f, 0, 1), state: ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip);
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(-1.5f, 0, 1), CheckOrigin(t));
@@ -196,7 +197,7 @@ public class CylSphereCollisionTests
     {
         // Falling from z=3.5 to 2.3 over the cap: the bottom reaches z=2 after 1.0 of 1.2, t = 5/6, normal +Z.
         var t = Mover(new Vector3(0.2f, 0, 3.5f), new Vector3(0.2f, 0, 2.3f), state: ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip);
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(0.2f, 0, 2.5f), CheckOrigin(t));
@@ -210,7 +211,7 @@ public class CylSphereCollisionTests
         // not definite; the cap time (0.5 + 2 - 4)/-1.7 = 15/17 puts the centre at x = -2 + 0.8*15/17, within
         // the 1.5 reach, so the cap wins: normal +Z and the sphere rests on the cap.
         var t = Mover(new Vector3(-2, 0, 4), new Vector3(-1.2f, 0, 2.3f), state: ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip);
-        var state = CylSphereCollision.IntersectsSphere(Post, t);
+        var state = CylSphereResponses.IntersectsSphere(Post, t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(-2f + 0.8f * 15f / 17f, 0, 2.5f), CheckOrigin(t));
@@ -221,7 +222,7 @@ public class CylSphereCollisionTests
     public void PathClipped_WithoutPerfectClip_RecordsTheNormalAndCollides()
     {
         var t = Mover(new Vector3(-3, 0, 1), new Vector3(-1.2f, 0, 1), state: ObjectInfoState.PathClipped);
-        Assert.Equal(TransitionState.Collided, CylSphereCollision.IntersectsSphere(Post, t));
+        Assert.Equal(TransitionState.Collided, CylSphereResponses.IntersectsSphere(Post, t));
         Near(-Vector3.UnitX, t.CollisionInfo.CollisionNormal);
         Near(new Vector3(-1.2f, 0, 1), CheckOrigin(t));
     }
@@ -239,11 +240,11 @@ public class CylSphereCollisionTests
         // A sphere 1.5 up the world Z axis is inside; one 1.5 along the rotated axis (-Y) is outside.
         var above = Mover(new Vector3(11, 10, 1.5f), new Vector3(11, 10, 1.5f));
         above.SpherePath.InsertType = InsertType.Placement;
-        Assert.Equal(TransitionState.Collided, CylSphereCollision.IntersectsSphere(local, owner, 1f, above));
+        Assert.Equal(TransitionState.Collided, CylSphereResponses.IntersectsSphere(local, owner, 1f, above));
 
         var alongRotatedAxis = Mover(new Vector3(11, 8.5f, 0), new Vector3(11, 8.5f, 0));
         alongRotatedAxis.SpherePath.InsertType = InsertType.Placement;
-        Assert.Equal(TransitionState.OK, CylSphereCollision.IntersectsSphere(local, owner, 1f, alongRotatedAxis));
+        Assert.Equal(TransitionState.OK, CylSphereResponses.IntersectsSphere(local, owner, 1f, alongRotatedAxis));
     }
 
     [Fact]
@@ -263,7 +264,7 @@ public class CylSphereCollisionTests
         // sphere 1 (r 0.3 at z 1.5) overlaps the slab and is 0.9 from the axis: apart by its own sum 0.8,
         // but retail uses sphere 0's radsum 0.5 - EPSILON + 0.5 (CCylSphere::intersects_sphere).
         var t = TwoSpherePlacement(Vector3.Zero);
-        Assert.Equal(TransitionState.Collided, CylSphereCollision.IntersectsSphere(new CylSphere(new Vector3(0.9f, 0, 1.2f), 0.5f, 1f), t));
-        Assert.Equal(TransitionState.OK, CylSphereCollision.IntersectsSphere(new CylSphere(new Vector3(1.01f, 0, 1.2f), 0.5f, 1f), t));
+        Assert.Equal(TransitionState.Collided, CylSphereResponses.IntersectsSphere(new CylSphere(new Vector3(0.9f, 0, 1.2f), 0.5f, 1f), t));
+        Assert.Equal(TransitionState.OK, CylSphereResponses.IntersectsSphere(new CylSphere(new Vector3(1.01f, 0, 1.2f), 0.5f, 1f), t));
     }
 }

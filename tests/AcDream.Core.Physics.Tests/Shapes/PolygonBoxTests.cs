@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Shapes;
 

@@ -3,6 +3,7 @@ using static AcDream.Core.Physics.Tests.Shapes.ShapeTestRig;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Shapes;
 
@@ -21,7 +22,7 @@ public class ShapeLimitTests
         var t = Mover(new Vector3(0, 0, 2.46f), new Vector3(0, 0, 1.96f));
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
-        Assert.Equal(TransitionState.Adjusted, CylSphereCollision.IntersectsSphere(Post, t));
+        Assert.Equal(TransitionState.Adjusted, CylSphereResponses.IntersectsSphere(Post, t));
         Near(new Vector3(0, 0, 2.5f), CheckOrigin(t));
         Assert.Equal(-0.08f, t.SpherePath.WalkInterp, 4);
     }
@@ -33,7 +34,7 @@ public class ShapeLimitTests
         var t = Mover(new Vector3(0, 0, 2f), new Vector3(0, 0, 1.5f));
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
-        Assert.Equal(TransitionState.Collided, CylSphereCollision.IntersectsSphere(Post, t));
+        Assert.Equal(TransitionState.Collided, CylSphereResponses.IntersectsSphere(Post, t));
         Near(new Vector3(0, 0, 1.5f), CheckOrigin(t));
     }
 
@@ -43,7 +44,7 @@ public class ShapeLimitTests
         // From z = −1.5 up to −0.3 (r 0.5) under the post: inside the circle and rising, normal −Z; the top
         // of the sphere meets the bottom cap (z = 0) when the centre is at −0.5, after 1.0 of 1.2: t = 5/6.
         var t = Mover(new Vector3(0.2f, 0, -1.5f), new Vector3(0.2f, 0, -0.3f), state: ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip);
-        Assert.Equal(TransitionState.Adjusted, CylSphereCollision.IntersectsSphere(Post, t));
+        Assert.Equal(TransitionState.Adjusted, CylSphereResponses.IntersectsSphere(Post, t));
         Near(new Vector3(0.2f, 0, -0.5f), CheckOrigin(t));
         Near(-Vector3.UnitZ, t.CollisionInfo.CollisionNormal);
     }
@@ -58,7 +59,7 @@ public class ShapeLimitTests
         // Current (0, 0, 1) right above a target at the origin, check (0.3, 0, 0.9): disp·(+Z) = 0.9 ≥ 0;
         // the move (0.3, 0, −0.1) loses −0.1 along +Z: the check position becomes (0.3, 0, 1).
         var t = OnFloor(new Vector3(0, 0, 1), new Vector3(0.3f, 0, 0.9f));
-        var state = SphereCollision.SlideSphereFromTarget(new Sphere(Vector3.Zero, 0.5f), t, new Vector3(0.3f, 0, 0.9f), 0);
+        var state = SphereResponses.SlideSphereFromTarget(new Sphere(Vector3.Zero, 0.5f), t, new Vector3(0.3f, 0, 0.9f), 0);
         Assert.Equal(TransitionState.Slid, state);
         Near(new Vector3(0.3f, 0, 1f), CheckOrigin(t));
     }
@@ -69,7 +70,7 @@ public class ShapeLimitTests
         // Current (0, 0, −1) right under the target: normal −Z, still parallel to +Z; disp = (0.3, 0, −0.9)
         // points against the contact normal: Collided, the check position unchanged.
         var t = OnFloor(new Vector3(0, 0, -1), new Vector3(0.3f, 0, -0.9f));
-        var state = SphereCollision.SlideSphereFromTarget(new Sphere(Vector3.Zero, 0.5f), t, new Vector3(0.3f, 0, -0.9f), 0);
+        var state = SphereResponses.SlideSphereFromTarget(new Sphere(Vector3.Zero, 0.5f), t, new Vector3(0.3f, 0, -0.9f), 0);
         Assert.Equal(TransitionState.Collided, state);
         Near(new Vector3(0.3f, 0, -0.9f), CheckOrigin(t));
     }
@@ -91,7 +92,7 @@ public class ShapeLimitTests
         t.CollisionInfo.SetContactPlane(new Plane(Vector3.UnitZ, 0f), isWater: false);
         var floating = new CylSphere(new Vector3(0, 0, 1f), 0.5f, 1f);
 
-        Assert.Equal(TransitionState.Slid, CylSphereCollision.IntersectsSphere(floating, t));
+        Assert.Equal(TransitionState.Slid, CylSphereResponses.IntersectsSphere(floating, t));
         Near(new Vector3(-1.2f, 0.3f, 0), CheckOrigin(t));
     }
 }

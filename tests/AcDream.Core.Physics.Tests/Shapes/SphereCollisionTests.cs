@@ -3,6 +3,7 @@ using static AcDream.Core.Physics.Tests.Shapes.ShapeTestRig;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Shapes;
 
@@ -29,7 +30,7 @@ public class SphereCollisionTests
         var t = Mover(new Vector3(distance, 0, 0), new Vector3(distance, 0, 0));
         t.SpherePath.InsertType = InsertType.Placement;
         var target = new Sphere(Vector3.Zero, 0.5f);
-        Assert.Equal(expected, SphereCollision.IntersectsSphere(target, t, isCreature: false));
+        Assert.Equal(expected, SphereResponses.IntersectsSphere(target, t, isCreature: false));
     }
 
     [Fact]
@@ -57,7 +58,7 @@ public class SphereCollisionTests
         // impact at x = -1, i.e. t = 2/2.5 = 0.8 of the move.
         var t = Mover(new Vector3(-3, 0, 0), new Vector3(-0.5f, 0, 0),
             state: ObjectInfoState.PathClipped | ObjectInfoState.PerfectClip);
-        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(-1, 0, 0), CheckOrigin(t));
@@ -68,7 +69,7 @@ public class SphereCollisionTests
     public void PathClipped_WithoutPerfectClip_RecordsNormalFromTargetToCurrentAndCollides()
     {
         var t = Mover(new Vector3(-3, 4, 0), new Vector3(-0.5f, 0, 0), state: ObjectInfoState.PathClipped);
-        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
 
         Assert.Equal(TransitionState.Collided, state);
         Near(new Vector3(-0.6f, 0.8f, 0), t.CollisionInfo.CollisionNormal);
@@ -79,7 +80,7 @@ public class SphereCollisionTests
     public void Airborne_LandsOn_RecordsStepUpCandidate()
     {
         var t = Mover(new Vector3(0, 0, 2), new Vector3(0, 0, 0.9f));
-        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Assert.True(t.SpherePath.Collide);
@@ -93,7 +94,7 @@ public class SphereCollisionTests
         // Target at (1,0,0.5); mover from (-0.2,0,0.5) to (0.1,0.3,0.5). Normal from target to current is -X,
         // the floor is +Z, so the slide direction is cross(-X, +Z) = +Y: the move (0.3,0.3,0) keeps only its Y.
         var t = OnFloor(new Vector3(-0.2f, 0, 0.5f), new Vector3(0.1f, 0.3f, 0.5f), stepUpHeight: 0.1f);
-        var state = SphereCollision.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), t, false);
 
         Assert.Equal(TransitionState.Slid, state);
         Near(new Vector3(-0.2f, 0.3f, 0.5f), CheckOrigin(t));
@@ -107,7 +108,7 @@ public class SphereCollisionTests
         var wallNormal = -Vector3.UnitX; // the wall is on +X, facing the mover
         var current = new Vector3(0, 0, 0.5f);
 
-        var state = SphereCollision.SlideSphere(t, CheckOrigin(t), 0.5f, ref wallNormal, current);
+        var state = SphereResponses.SlideSphere(t, CheckOrigin(t), 0.5f, ref wallNormal, current);
 
         Assert.Equal(TransitionState.Slid, state);
         Vector3 slid = CheckOrigin(t) - current;
@@ -124,7 +125,7 @@ public class SphereCollisionTests
         var t = OnFloor(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, 0.5f));
         var wallNormal = -Vector3.UnitX;
 
-        var state = SphereCollision.SlideSphere(t, CheckOrigin(t), 0.5f, ref wallNormal, new Vector3(0, 0, 0.5f));
+        var state = SphereResponses.SlideSphere(t, CheckOrigin(t), 0.5f, ref wallNormal, new Vector3(0, 0, 0.5f));
 
         Assert.Equal(TransitionState.Collided, state);
         Near(new Vector3(0.3f, 0, 0.5f), CheckOrigin(t));
@@ -135,7 +136,7 @@ public class SphereCollisionTests
     {
         var t = OnFloor(new Vector3(0, 0, 0.5f), new Vector3(0.4f, 0.2f, 0.5f));
         var normal = Vector3.Zero;
-        var state = SphereCollision.SlideSphere(t, CheckOrigin(t), 0.5f, ref normal, new Vector3(0, 0, 0.5f));
+        var state = SphereResponses.SlideSphere(t, CheckOrigin(t), 0.5f, ref normal, new Vector3(0, 0, 0.5f));
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(0.2f, 0.1f, 0.5f), CheckOrigin(t));
@@ -146,7 +147,7 @@ public class SphereCollisionTests
     {
         var t = OnFloor(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0.4f, 0.3f));
         var normal = Vector3.UnitZ;
-        var state = SphereCollision.SlideSphere(t, CheckOrigin(t), 0.5f, ref normal, new Vector3(0, 0, 0.5f));
+        var state = SphereResponses.SlideSphere(t, CheckOrigin(t), 0.5f, ref normal, new Vector3(0, 0, 0.5f));
 
         Assert.Equal(TransitionState.Slid, state);
         Near(new Vector3(0.3f, 0.4f, 0.5f), CheckOrigin(t));
@@ -158,7 +159,7 @@ public class SphereCollisionTests
         // Retail returns Collided here (ACE's port returns OK) and records the reversed move as the normal.
         var t = OnFloor(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0.4f, 0.5f));
         var normal = -Vector3.UnitZ;
-        var state = SphereCollision.SlideSphere(t, CheckOrigin(t), 0.5f, ref normal, new Vector3(0, 0, 0.5f));
+        var state = SphereResponses.SlideSphere(t, CheckOrigin(t), 0.5f, ref normal, new Vector3(0, 0, 0.5f));
 
         Assert.Equal(TransitionState.Collided, state);
         Near(new Vector3(-0.6f, -0.8f, 0), normal);
@@ -174,7 +175,7 @@ public class SphereCollisionTests
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
 
-        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(0, 0, 1.0f), CheckOrigin(t));
@@ -203,7 +204,7 @@ public class SphereCollisionTests
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
 
-        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
 
         Assert.Equal(TransitionState.Adjusted, state);
         var normal = t.CollisionInfo.ContactPlane.Normal;
@@ -220,7 +221,7 @@ public class SphereCollisionTests
         var t = Mover(new Vector3(0, 0, 1.3f), new Vector3(0, 0, 0.8f));
         t.SpherePath.StepDown = true;
         t.SpherePath.StepDownAmt = 0.5f;
-        Assert.Equal(TransitionState.OK, SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, isCreature: true));
+        Assert.Equal(TransitionState.OK, SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, isCreature: true));
         Near(new Vector3(0, 0, 0.8f), CheckOrigin(t));
     }
 
@@ -230,7 +231,7 @@ public class SphereCollisionTests
         // After set_collide, falling straight down onto a sphere at the origin: backed up to z = 1.
         var t = Mover(new Vector3(0, 0, 1.5f), new Vector3(0, 0, 0.9f));
         t.SpherePath.Collide = true;
-        var state = SphereCollision.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
+        var state = SphereResponses.IntersectsSphere(new Sphere(Vector3.Zero, 0.5f), t, false);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Near(new Vector3(0, 0, 1.0f), CheckOrigin(t));
@@ -259,8 +260,8 @@ public class SphereCollisionTests
         // with sphere 0's radsum 0.5 + 0.5 - EPSILON (CSphere::intersects_sphere). Sphere 0 is 1.35 away.
         var t = TwoSpherePlacement(Vector3.Zero);
         Assert.Equal(InsertType.Placement, t.SpherePath.InsertType);
-        Assert.Equal(TransitionState.Collided, SphereCollision.IntersectsSphere(new Sphere(new Vector3(0.9f, 0, 1.5f), 0.5f), t, false));
-        Assert.Equal(TransitionState.OK, SphereCollision.IntersectsSphere(new Sphere(new Vector3(1.01f, 0, 1.5f), 0.5f), t, false));
+        Assert.Equal(TransitionState.Collided, SphereResponses.IntersectsSphere(new Sphere(new Vector3(0.9f, 0, 1.5f), 0.5f), t, false));
+        Assert.Equal(TransitionState.OK, SphereResponses.IntersectsSphere(new Sphere(new Vector3(1.01f, 0, 1.5f), 0.5f), t, false));
     }
 
     [Fact]
@@ -268,12 +269,12 @@ public class SphereCollisionTests
     {
         var probe = OnFloor(new Vector3(-0.2f, 0, 0.5f), new Vector3(0.1f, 0.3f, 0.5f));
         probe.SpherePath.CheckWalkable = true;
-        Assert.Equal(TransitionState.Collided, SphereCollision.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), probe, false));
+        Assert.Equal(TransitionState.Collided, SphereResponses.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), probe, false));
         Near(new Vector3(0.1f, 0.3f, 0.5f), CheckOrigin(probe));
 
         var ethereal = OnFloor(new Vector3(-0.2f, 0, 0.5f), new Vector3(0.1f, 0.3f, 0.5f));
         ethereal.SpherePath.ObstructionEthereal = true;
-        Assert.Equal(TransitionState.Collided, SphereCollision.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), ethereal, false));
-        Assert.Equal(TransitionState.OK, SphereCollision.IntersectsSphere(new Sphere(new Vector3(2, 0, 0.5f), 0.5f), ethereal, false));
+        Assert.Equal(TransitionState.Collided, SphereResponses.IntersectsSphere(new Sphere(new Vector3(1, 0, 0.5f), 0.5f), ethereal, false));
+        Assert.Equal(TransitionState.OK, SphereResponses.IntersectsSphere(new Sphere(new Vector3(2, 0, 0.5f), 0.5f), ethereal, false));
     }
 }

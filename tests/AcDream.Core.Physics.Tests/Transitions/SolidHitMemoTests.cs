@@ -2,6 +2,7 @@ using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Tests.Bsp;
 using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Transitions;
 
@@ -40,14 +41,14 @@ public class SolidHitMemoTests
         var tree = BoxFixtures.SolidBox(out _);
         var t = BoxFixtures.MakeTransition(from, to, 0.5f);
         var path = t.SpherePath;
-        Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 1f, Owner));
+        Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(tree, t, 1f, Owner));
         Assert.False(path.KnownSolidHit(Owner, Space, 1f)); // a move's insert is not a placement
         path.InsertType = InsertType.Placement;
         Assert.True(path.KnownSolidHit(Owner, Space, 1f));
 
         path.SolidHit.Forget();
         Assert.False(path.KnownSolidHit(Owner, Space, 1f));
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, t, 1f));
+        Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(tree, t, 1f));
     }
 
     /// <summary>
@@ -63,12 +64,12 @@ public class SolidHitMemoTests
         t.ObjectInfo.State |= ObjectInfoState.Contact;
         var path = t.SpherePath;
         var hitAt = path.CheckPos;
-        BspQuery.FindCollisions(tree, t, 1f, Owner);
+        BspResponses.FindCollisions(tree, t, 1f, Owner);
         Assert.True(path.SolidHit.Holds(Owner, Space, 1f, hitAt));
 
         var placement = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
         placement.SpherePath.InsertType = InsertType.Placement;
-        Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, placement, 1f));
+        Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(tree, placement, 1f));
     }
 
     /// <summary>A test that finds nothing (x 3 → 2.5, clear of the box) remembers nothing.</summary>
@@ -76,7 +77,7 @@ public class SolidHitMemoTests
     public void Miss_IsNotRemembered()
     {
         var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(2.5f, 0, 0), 0.5f);
-        Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner));
+        Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner));
         t.SpherePath.InsertType = InsertType.Placement;
         Assert.False(t.SpherePath.KnownSolidHit(Owner, Space, 1f));
     }
@@ -91,7 +92,7 @@ public class SolidHitMemoTests
     {
         var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
         var path = t.SpherePath;
-        BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner);
+        BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner);
         path.InsertType = InsertType.Placement;
         Assert.True(path.KnownSolidHit(Owner, Space, 1f));
         Assert.False(path.KnownSolidHit(new object(), Space, 1f));
@@ -107,7 +108,7 @@ public class SolidHitMemoTests
 
         path.InitSphere([new Sphere(Vector3.Zero, 0.4f)], 1f);
         Assert.False(path.KnownSolidHit(Owner, Space, 1f));
-        BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), Remade(t), 1f, Owner);
+        BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), Remade(t), 1f, Owner);
         path.InsertType = InsertType.Placement;
         Assert.True(path.KnownSolidHit(Owner, Space, 1f));
         path.Reset();

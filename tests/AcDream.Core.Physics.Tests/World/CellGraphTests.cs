@@ -13,7 +13,7 @@ public class CellGraphTests
     {
         var cells = new CellArray();
         ReadOnlySpan<Sphere> spheres = [new Sphere(position.Origin + new Vector3(0, 0, z), radius)];
-        var holder = world.Cells.FindCellList(position, spheres, cells, findContaining: true, path: null);
+        var holder = world.Cells.FindCellList(position, spheres, cells, findContaining: true, out _);
         return (Enumerable.Range(0, cells.Count).Select(i => cells[i].Id).ToHashSet(), holder);
     }
 

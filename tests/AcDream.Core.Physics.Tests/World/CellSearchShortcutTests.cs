@@ -28,10 +28,9 @@ public class CellSearchShortcutTests
     {
         graph.SearchInFull = full;
         var cells = new CellArray();
-        var path = new SpherePath();
-        var holder = graph.FindCellList(position, spheres, cells, findContaining, path);
+        var holder = graph.FindCellList(position, spheres, cells, findContaining, out bool interior);
         graph.SearchInFull = false;
-        return (Enumerable.Range(0, cells.Count).Select(i => cells[i].Id).ToArray(), holder?.Id ?? 0, path.HitsInteriorCell);
+        return (Enumerable.Range(0, cells.Count).Select(i => cells[i].Id).ToArray(), holder?.Id ?? 0, interior);
     }
 
     // An offset into a cell's square: around its edges (radius-wise and by the float step), inside, or beyond.

@@ -2,6 +2,7 @@ using AcDream.Core.Physics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.World;
 
@@ -30,7 +31,7 @@ public class LandCellCollisionTests
         t.SpherePath.InitPath(null, check, check);
         t.SpherePath.SetCheckPos(check, world.Cells.Get(0xA9B40039));
 
-        var state = east.FindEnvCollisions(t);
+        var state = CellCollisions.FindEnvCollisions(east, t);
 
         Assert.Equal(TransitionState.Adjusted, state);
         Assert.Equal(0.3f / 24f, t.SpherePath.CheckPos.Frame.Origin.Z, 1e-5f);

@@ -2,9 +2,9 @@ using System.Numerics;
 using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Transitions;
+using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics.Shapes;
+namespace AcDream.Core.Physics.Transitions.Responses;
 
 /// <summary>Collides a transition with one placed physics model (retail CPhysicsPart + CGfxObj::find_obj_collisions).</summary>
 internal static class PartCollision
@@ -69,8 +69,8 @@ internal static class PartCollision
             if (Vector3.DistanceSquared(bounds.Center, local.Center) - reach * reach < PhysicsConstants.Epsilon)
             {
                 return path.InsertType == InsertType.InitialPlacement
-                    ? BspQuery.PlacementInsert(model.Bsp, transition)
-                    : BspQuery.FindCollisions(model.Bsp, transition, scale, model);
+                    ? BspResponses.PlacementInsert(model.Bsp, transition)
+                    : BspResponses.FindCollisions(model.Bsp, transition, scale, model);
             }
         }
         return TransitionState.OK;
