@@ -2,17 +2,12 @@ using System;
 
 namespace AcDream.Core.Physics.Motion;
 
-/// <summary>A motion with its speed (a modifier or an action of a <see cref="MotionState"/>).</summary>
-/// <param name="Id">The motion command.</param>
-/// <param name="Speed">Its speed.</param>
-public readonly record struct MotionAndSpeed(uint Id, float Speed);
-
 /// <summary>
 /// The motion table manager's state of one object (retail MotionState): the style, the substate (the cycle
 /// playing) with its speed, the modifiers combined with it (newest first) and the count of actions queued.
 /// Fixed storage, reused: no allocation once warm.
 /// </summary>
-internal sealed class MotionState
+internal sealed class MotionTableState
 {
     public uint Style;
     public uint Substate;

@@ -3,19 +3,19 @@ using AcDream.Core.Physics.Reference;
 using Xunit.Abstractions;
 using static AcDream.Core.Physics.Tests.Reference.RandomSweeps;
 
-namespace AcDream.Core.Physics.Tests.Reference;
+namespace AcDream.Core.Physics.Tests.Geometry;
 
 /// <summary>
 /// The exact polygon sweep returns early for a sphere that starts behind a single-sided polygon and still ends
 /// behind its plane. That is an optimization of the rule it had before — from behind, only an edge or a corner
 /// can be met, and only with the centre in front of the plane at that moment — so it must give the same answer
 /// bit for bit. Here the rule is written out as it was (every edge and corner solved, each contact kept when it
-/// is the earliest so far and <c>s0 + t·vn ≥ 0</c>) and compared with <see cref="ReferenceToi.Polygon(Vector3, Vector3, float, Polygon, out ReferenceHit)"/>
+/// is the earliest so far and <c>s0 + t·vn ≥ 0</c>) and compared with <see cref="TimeOfImpact.Polygon(Vector3, Vector3, float, Polygon, out ImpactHit)"/>
 /// on seeded sweeps that start behind the plane: rays and spheres of many radii, ending behind, just in front
 /// or well in front of the plane, near edges and corners, skimming along the plane, crossing terrain-like
 /// ridges, at the origin and hundreds of metres from it.
 /// </summary>
-public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
+public class TimeOfImpactBehindPropertyTests(ITestOutputHelper output)
 {
     private const int Cases = 100_000;
     private const int Seed = 20261202;
@@ -34,7 +34,7 @@ public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
             if (r < 1e-4f)
                 rays++;
             bool expected = OldRule(c, d, r, polygon, out var want, out bool refusedOnly);
-            bool found = ReferenceToi.Polygon(c, d, r, polygon, out var got);
+            bool found = TimeOfImpact.Polygon(c, d, r, polygon, out var got);
             float s0 = Vector3.Dot(polygon.Plane.Normal, c - polygon.Vertices[0]);
             float vn = Vector3.Dot(polygon.Plane.Normal, d);
             if (s0 + vn < 0f)
@@ -71,7 +71,7 @@ public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
     /// contact when earlier and with the centre in front of the plane (<c>s0 + t·vn ≥ 0</c>). <paramref name="refusedOnly"/>:
     /// some edge or corner was met, but only while the centre was behind.
     /// </summary>
-    private static bool OldRule(Vector3 c, Vector3 d, float r, Polygon polygon, out ReferenceHit hit, out bool refusedOnly)
+    private static bool OldRule(Vector3 c, Vector3 d, float r, Polygon polygon, out ImpactHit hit, out bool refusedOnly)
     {
         hit = default;
         refusedOnly = false;
@@ -84,35 +84,35 @@ public class ReferenceToiBehindPropertyTests(ITestOutputHelper output)
             return false;
         float best = float.PositiveInfinity;
         var normal = Vector3.Zero;
-        var feature = ReferenceFeature.None;
+        var feature = ImpactFeature.None;
         bool met = false;
         for (int i = 0; i < v.Length; i++)
         {
             var a = v[i];
             var b = v[(i + 1) % v.Length];
-            if (ReferenceToi.Segment(c, d, r, a, b, out float te, out var ne))
+            if (TimeOfImpact.Segment(c, d, r, a, b, out float te, out var ne))
             {
                 met = true;
                 if (te < best && s0 + te * vn >= 0f)
-                    (best, normal, feature) = (te, ne, ReferenceFeature.Edge);
+                    (best, normal, feature) = (te, ne, ImpactFeature.Edge);
             }
-            if (ReferenceToi.Point(c, d, r, a, out float tv, out var nv))
+            if (TimeOfImpact.Point(c, d, r, a, out float tv, out var nv))
             {
                 met = true;
                 if (tv < best && s0 + tv * vn >= 0f)
-                    (best, normal, feature) = (tv, nv, ReferenceFeature.Vertex);
+                    (best, normal, feature) = (tv, nv, ImpactFeature.Vertex);
             }
         }
-        if (feature == ReferenceFeature.None)
+        if (feature == ImpactFeature.None)
         {
             refusedOnly = met;
             return false;
         }
-        hit = new ReferenceHit(best, normal, feature);
+        hit = new ImpactHit(best, normal, feature);
         return true;
     }
 
-    private static bool Same(ReferenceHit a, ReferenceHit b) =>
+    private static bool Same(ImpactHit a, ImpactHit b) =>
         a.Feature == b.Feature && Bits(a.Time) == Bits(b.Time)
         && Bits(a.Normal.X) == Bits(b.Normal.X) && Bits(a.Normal.Y) == Bits(b.Normal.Y) && Bits(a.Normal.Z) == Bits(b.Normal.Z);
 

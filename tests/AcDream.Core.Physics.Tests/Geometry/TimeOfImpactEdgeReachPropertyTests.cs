@@ -3,18 +3,18 @@ using AcDream.Core.Physics.Reference;
 using Xunit.Abstractions;
 using static AcDream.Core.Physics.Tests.Reference.RandomSweeps;
 
-namespace AcDream.Core.Physics.Tests.Reference;
+namespace AcDream.Core.Physics.Tests.Geometry;
 
 /// <summary>
 /// The exact polygon sweep solves an edge (and its first corner) only when the edge's box meets the box the
 /// sphere's centre sweeps until the best contact so far, widened by the radius and a margin
-/// (<see cref="ReferenceToi.EdgeReach"/>). That skip changes no answer only if every contact <see cref="ReferenceToi.Segment"/>
-/// or <see cref="ReferenceToi.Point"/> reports before that time has its edge's box meeting the swept box. Checked
+/// (<see cref="TimeOfImpact.EdgeReach"/>). That skip changes no answer only if every contact <see cref="TimeOfImpact.Segment"/>
+/// or <see cref="TimeOfImpact.Point"/> reports before that time has its edge's box meeting the swept box. Checked
 /// here on seeded sweeps: spheres of many radii, edges of random and of axis-aligned polygons (a door's slab,
 /// where a contact's offset from the edge lies along an axis and uses the whole radius), sweeps cut off at a
 /// random earlier contact, at the origin and hundreds of metres from it.
 /// </summary>
-public class ReferenceToiEdgeReachPropertyTests(ITestOutputHelper output)
+public class TimeOfImpactEdgeReachPropertyTests(ITestOutputHelper output)
 {
     private const int Cases = 100_000;
     private const int Seed = 20261203;
@@ -28,17 +28,17 @@ public class ReferenceToiEdgeReachPropertyTests(ITestOutputHelper output)
         for (int i = 0; i < Cases; i++)
         {
             var (polygon, c, d, r, limit) = MakeCase(rng);
-            ReferenceToi.EdgeReach(c, d, r, limit, polygon, out var min, out var max);
+            TimeOfImpact.EdgeReach(c, d, r, limit, polygon, out var min, out var max);
             var v = polygon.Vertices;
             for (int k = 0; k < v.Length; k++)
             {
                 var a = v[k];
                 var b = v[(k + 1) % v.Length];
-                bool meets = ReferenceToi.EdgeMeetsBox(a, b, min, max);
+                bool meets = TimeOfImpact.EdgeMeetsBox(a, b, min, max);
                 if (!meets)
                     skipped++;
-                bool edge = ReferenceToi.Segment(c, d, r, a, b, out float te, out _) && te <= limit;
-                bool corner = ReferenceToi.Point(c, d, r, a, out float tv, out _) && tv <= limit;
+                bool edge = TimeOfImpact.Segment(c, d, r, a, b, out float te, out _) && te <= limit;
+                bool corner = TimeOfImpact.Point(c, d, r, a, out float tv, out _) && tv <= limit;
                 if (!edge && !corner)
                     continue;
                 contacts++;

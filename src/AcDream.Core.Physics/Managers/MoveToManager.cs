@@ -1,7 +1,7 @@
 using System;
-using System.Numerics;
+using AcDream.Core.Physics.Motion;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Managers;
 
 /// <summary>
 /// Retail's MoveToManager (acclient-src PORTAL/canim/CMoveToManager.c, acclient.c:344714-346150): moves a creature to a
@@ -30,17 +30,6 @@ internal sealed class MoveToManager
     {
         public int Type;
         public float Heading;
-    }
-
-    /// <summary>What the manager reads and writes of the object for one call (CPhysicsObj's position and flags).</summary>
-    internal struct BodyView
-    {
-        public Position Position;
-        public bool Contact;
-        /// <summary>CPhysicsObj::IsInterpolating: the position manager has positions queued (a failed check is then not counted).</summary>
-        public bool Interpolating;
-        public uint Id;
-        public float Radius, Height;
     }
 
     private readonly MotionInterpreter _interp;
@@ -77,7 +66,7 @@ internal sealed class MoveToManager
     public bool StickPending;
 
     // The body of the call in progress.
-    private BodyView _body;
+    private MoveToBody _body;
     private bool _headingChanged;
 
     public MoveToManager(MotionInterpreter interp, MotionTableManager table)
@@ -98,7 +87,7 @@ internal sealed class MoveToManager
     // ---- the calls, each with the object's body: returns whether the heading was set ----
 
     /// <summary>PerformMovement → MoveToPosition (acclient.c:346118, 345789).</summary>
-    public bool MoveToPosition(ref BodyView body, in Position target, in MoveToParameters p)
+    public bool MoveToPosition(ref MoveToBody body, in Position target, in MoveToParameters p)
     {
         Begin(ref body);
         PerformMovement();
@@ -127,7 +116,7 @@ internal sealed class MoveToManager
     }
 
     /// <summary>PerformMovement → MoveToObject (acclient.c:345183): waits for the first target update unless the object is itself.</summary>
-    public bool MoveToObject(ref BodyView body, uint objectId, uint topLevelId, float radius, float height, in MoveToParameters p)
+    public bool MoveToObject(ref MoveToBody body, uint objectId, uint topLevelId, float radius, float height, in MoveToParameters p)
     {
         Begin(ref body);
         PerformMovement();
@@ -147,7 +136,7 @@ internal sealed class MoveToManager
     }
 
     /// <summary>PerformMovement → TurnToObject (acclient.c:345241).</summary>
-    public bool TurnToObject(ref BodyView body, uint objectId, uint topLevelId, in MoveToParameters p)
+    public bool TurnToObject(ref MoveToBody body, uint objectId, uint topLevelId, in MoveToParameters p)
     {
         Begin(ref body);
         PerformMovement();
@@ -168,7 +157,7 @@ internal sealed class MoveToManager
     }
 
     /// <summary>PerformMovement → TurnToHeading (acclient.c:345953): the turn node, begun at once.</summary>
-    public bool TurnToHeading(ref BodyView body, in MoveToParameters p)
+    public bool TurnToHeading(ref MoveToBody body, in MoveToParameters p)
     {
         Begin(ref body);
         PerformMovement();
@@ -187,7 +176,7 @@ internal sealed class MoveToManager
     /// HandleUpdateTarget (acclient.c:346050): the sought object's position (<paramref name="present"/> false: it is gone).
     /// Returns false when the update is for another object (ignored, as retail).
     /// </summary>
-    public bool UpdateTarget(ref BodyView body, uint objectId, in Position target, in Position interpolated, bool present, out bool headingChanged)
+    public bool UpdateTarget(ref MoveToBody body, uint objectId, in Position target, in Position interpolated, bool present, out bool headingChanged)
     {
         headingChanged = false;
         if (TopLevelObjectId != objectId || !Active)
@@ -232,7 +221,7 @@ internal sealed class MoveToManager
     }
 
     /// <summary>CancelMoveTo (acclient.c:345296): drops the nodes, stops the commands and the object.</summary>
-    public void Cancel(ref BodyView body, MoveToError error)
+    public void Cancel(ref MoveToBody body, MoveToError error)
     {
         Begin(ref body);
         CancelMoveTo(error);
@@ -249,7 +238,7 @@ internal sealed class MoveToManager
     /// UseTime (acclient.c:346017), after a quantum's transition: with contact, and once the target is known, the head
     /// node's handler runs. Returns whether it set the heading (the caller copies <paramref name="body"/>'s orientation).
     /// </summary>
-    public bool UseTime(ref BodyView body)
+    public bool UseTime(ref MoveToBody body)
     {
         if (_count == 0 || !body.Contact)
             return false;
@@ -264,7 +253,7 @@ internal sealed class MoveToManager
     }
 
     /// <summary>HitGround (acclient.c:345569): landing restarts the head node.</summary>
-    public bool HitGround(ref BodyView body)
+    public bool HitGround(ref MoveToBody body)
     {
         if (!Active)
             return false;
@@ -282,13 +271,13 @@ internal sealed class MoveToManager
         StickPending = false;
     }
 
-    private void Begin(ref BodyView body)
+    private void Begin(ref MoveToBody body)
     {
         _body = body;
         _headingChanged = false;
     }
 
-    private bool End(ref BodyView body)
+    private bool End(ref MoveToBody body)
     {
         body = _body;
         return _headingChanged;

@@ -4,10 +4,10 @@ using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
 using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics.Tests.Reference;
+namespace AcDream.Core.Physics.Tests.Geometry;
 
 /// <summary>Analytic times of impact of the reference sweep (hand-solved distance equations).</summary>
-public class ReferenceToiTests
+public class TimeOfImpactTests
 {
     private const float Tol = 1e-5f;
 
@@ -17,17 +17,17 @@ public class ReferenceToiTests
     [Fact]
     public void Plane_HeadOn()
     {
-        Assert.True(ReferenceToi.Plane(new Vector3(0, 0, 2), new Vector3(0, 0, -4), 0.5f, new Plane(Vector3.UnitZ, 0), out float t));
+        Assert.True(TimeOfImpact.Plane(new Vector3(0, 0, 2), new Vector3(0, 0, -4), 0.5f, new Plane(Vector3.UnitZ, 0), out float t));
         Assert.Equal(0.375f, t, Tol);
-        Assert.False(ReferenceToi.Plane(new Vector3(0, 0, 2), new Vector3(0, 0, 4), 0.5f, new Plane(Vector3.UnitZ, 0), out _));
-        Assert.False(ReferenceToi.Plane(new Vector3(0, 0, 2), new Vector3(0, 0, -1), 0.5f, new Plane(Vector3.UnitZ, 0), out _));
+        Assert.False(TimeOfImpact.Plane(new Vector3(0, 0, 2), new Vector3(0, 0, 4), 0.5f, new Plane(Vector3.UnitZ, 0), out _));
+        Assert.False(TimeOfImpact.Plane(new Vector3(0, 0, 2), new Vector3(0, 0, -1), 0.5f, new Plane(Vector3.UnitZ, 0), out _));
     }
 
     [Fact]
     public void Polygon_Face()
     {
-        Assert.True(ReferenceToi.Polygon(new Vector3(0.3f, 0.2f, 2), new Vector3(0, 0, -4), 0.5f, Square, out var hit));
-        Assert.Equal(ReferenceFeature.Face, hit.Feature);
+        Assert.True(TimeOfImpact.Polygon(new Vector3(0.3f, 0.2f, 2), new Vector3(0, 0, -4), 0.5f, Square, out var hit));
+        Assert.Equal(ImpactFeature.Face, hit.Feature);
         Assert.Equal(0.375f, hit.Time, Tol);
         Assert.Equal(Vector3.UnitZ, hit.Normal);
     }
@@ -35,9 +35,9 @@ public class ReferenceToiTests
     [Fact]
     public void Polygon_SingleSided_IgnoredFromBehind_DoubleSidedHit()
     {
-        Assert.False(ReferenceToi.Polygon(new Vector3(0, 0, -2), new Vector3(0, 0, 4), 0.5f, Square, out _));
+        Assert.False(TimeOfImpact.Polygon(new Vector3(0, 0, -2), new Vector3(0, 0, 4), 0.5f, Square, out _));
         var twoSided = new Polygon(Square.Vertices, PolygonSides.Double);
-        Assert.True(ReferenceToi.Polygon(new Vector3(0, 0, -2), new Vector3(0, 0, 4), 0.5f, twoSided, out var hit));
+        Assert.True(TimeOfImpact.Polygon(new Vector3(0, 0, -2), new Vector3(0, 0, 4), 0.5f, twoSided, out var hit));
         Assert.Equal(0.375f, hit.Time, Tol);
         Assert.Equal(-Vector3.UnitZ, hit.Normal);
     }
@@ -46,8 +46,8 @@ public class ReferenceToiTests
     public void Polygon_Edge()
     {
         // Centre 0.3 above the plane, moving at the x = 1 edge: contact when (x − 1)² + 0.3² = 0.5², x = 1.4.
-        Assert.True(ReferenceToi.Polygon(new Vector3(3, 0, 0.3f), new Vector3(-4, 0, 0), 0.5f, Square, out var hit));
-        Assert.Equal(ReferenceFeature.Edge, hit.Feature);
+        Assert.True(TimeOfImpact.Polygon(new Vector3(3, 0, 0.3f), new Vector3(-4, 0, 0), 0.5f, Square, out var hit));
+        Assert.Equal(ImpactFeature.Edge, hit.Feature);
         Assert.Equal((3 - 1.4f) / 4, hit.Time, Tol);
         Assert.True(Vector3.Distance(new Vector3(0.8f, 0, 0.6f), hit.Normal) < 1e-4f, hit.ToString());
     }
@@ -56,8 +56,8 @@ public class ReferenceToiTests
     public void Polygon_Vertex()
     {
         // Passing 0.2 beside the (1, 1, 0) corner, 0.3 above it: (x − 1)² = 0.25 − 0.04 − 0.09.
-        Assert.True(ReferenceToi.Polygon(new Vector3(3, 1.2f, 0.3f), new Vector3(-4, 0, 0), 0.5f, Square, out var hit));
-        Assert.Equal(ReferenceFeature.Vertex, hit.Feature);
+        Assert.True(TimeOfImpact.Polygon(new Vector3(3, 1.2f, 0.3f), new Vector3(-4, 0, 0), 0.5f, Square, out var hit));
+        Assert.Equal(ImpactFeature.Vertex, hit.Feature);
         float x = 1 + MathF.Sqrt(0.12f);
         Assert.Equal((3 - x) / 4, hit.Time, Tol);
         Assert.True(Vector3.Distance(Vector3.Normalize(new Vector3(x - 1, 0.2f, 0.3f)), hit.Normal) < 1e-4f, hit.ToString());
@@ -66,18 +66,18 @@ public class ReferenceToiTests
     [Fact]
     public void Polygon_Miss_WhenPassingBeyondTheRadius()
     {
-        Assert.False(ReferenceToi.Polygon(new Vector3(3, 1.6f, 0.3f), new Vector3(-4, 0, 0), 0.5f, Square, out _));
-        Assert.False(ReferenceToi.Polygon(new Vector3(0, 0, 3), new Vector3(0, 0, -2), 0.5f, Square, out _));
+        Assert.False(TimeOfImpact.Polygon(new Vector3(3, 1.6f, 0.3f), new Vector3(-4, 0, 0), 0.5f, Square, out _));
+        Assert.False(TimeOfImpact.Polygon(new Vector3(0, 0, 3), new Vector3(0, 0, -2), 0.5f, Square, out _));
     }
 
     [Fact]
     public void Polygon_Resting_StopsOnlyWhenMovingIn()
     {
-        Assert.True(ReferenceToi.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, -0.1f), 0.5f, Square, out var hit));
-        Assert.Equal(ReferenceFeature.Resting, hit.Feature);
+        Assert.True(TimeOfImpact.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, -0.1f), 0.5f, Square, out var hit));
+        Assert.Equal(ImpactFeature.Resting, hit.Feature);
         Assert.Equal(0f, hit.Time);
-        Assert.False(ReferenceToi.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, 0), 0.5f, Square, out _));
-        Assert.False(ReferenceToi.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, 0.1f), 0.5f, Square, out _));
+        Assert.False(TimeOfImpact.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, 0), 0.5f, Square, out _));
+        Assert.False(TimeOfImpact.Polygon(new Vector3(0, 0, 0.5f), new Vector3(0.3f, 0, 0.1f), 0.5f, Square, out _));
     }
 
     /// <summary>
@@ -101,10 +101,10 @@ public class ReferenceToiTests
         var outward = Vector3.Normalize(new Vector3(v[k].X, v[k].Y, 0));
         var c = v[k] + outward * 1e-4f + n * (r - 2e-4f);
         // The case in question: farther than radius + slop from vertex 0's plane, nearer than the radius to the corner.
-        Assert.True(Vector3.Dot(n, c - v[0]) > r + ReferenceToi.ContactSlop + 1e-4f, $"height above vertex 0's plane {Vector3.Dot(n, c - v[0])}");
+        Assert.True(Vector3.Dot(n, c - v[0]) > r + TimeOfImpact.ContactSlop + 1e-4f, $"height above vertex 0's plane {Vector3.Dot(n, c - v[0])}");
         Assert.True(Vector3.Distance(c, v[k]) < r - 1e-4f);
-        Assert.True(ReferenceToi.Polygon(c, new Vector3(0, 0, -0.1f), r, saddle, out var hit));
-        Assert.Equal(ReferenceFeature.Resting, hit.Feature);
+        Assert.True(TimeOfImpact.Polygon(c, new Vector3(0, 0, -0.1f), r, saddle, out var hit));
+        Assert.Equal(ImpactFeature.Resting, hit.Feature);
         Assert.Equal(0f, hit.Time);
     }
 
@@ -113,8 +113,8 @@ public class ReferenceToiTests
     [Fact]
     public void Cylinder_Side()
     {
-        Assert.True(ReferenceToi.Cylinder(new Vector3(3, 0, 1), new Vector3(-4, 0, 0), 0.5f, Cyl, out var hit));
-        Assert.Equal(ReferenceFeature.CylinderSide, hit.Feature);
+        Assert.True(TimeOfImpact.Cylinder(new Vector3(3, 0, 1), new Vector3(-4, 0, 0), 0.5f, Cyl, out var hit));
+        Assert.Equal(ImpactFeature.CylinderSide, hit.Feature);
         Assert.Equal(0.5f, hit.Time, Tol);
         Assert.Equal(Vector3.UnitX, hit.Normal);
     }
@@ -122,8 +122,8 @@ public class ReferenceToiTests
     [Fact]
     public void Cylinder_Cap()
     {
-        Assert.True(ReferenceToi.Cylinder(new Vector3(0.2f, 0, 4), new Vector3(0, 0, -4), 0.5f, Cyl, out var hit));
-        Assert.Equal(ReferenceFeature.CylinderCap, hit.Feature);
+        Assert.True(TimeOfImpact.Cylinder(new Vector3(0.2f, 0, 4), new Vector3(0, 0, -4), 0.5f, Cyl, out var hit));
+        Assert.Equal(ImpactFeature.CylinderCap, hit.Feature);
         Assert.Equal(0.375f, hit.Time, Tol);
         Assert.Equal(Vector3.UnitZ, hit.Normal);
     }
@@ -132,8 +132,8 @@ public class ReferenceToiTests
     public void Cylinder_Rim()
     {
         // Falling 0.3 outside the rim: (0.8 − 0.5)² + (z − 2)² = 0.5², z = 2.4.
-        Assert.True(ReferenceToi.Cylinder(new Vector3(0.8f, 0, 4), new Vector3(0, 0, -4), 0.5f, Cyl, out var hit));
-        Assert.Equal(ReferenceFeature.CylinderRim, hit.Feature);
+        Assert.True(TimeOfImpact.Cylinder(new Vector3(0.8f, 0, 4), new Vector3(0, 0, -4), 0.5f, Cyl, out var hit));
+        Assert.Equal(ImpactFeature.CylinderRim, hit.Feature);
         Assert.Equal(0.4f, hit.Time, 1e-4f);
         Assert.True(Vector3.Distance(new Vector3(0.6f, 0, 0.8f), hit.Normal) < 1e-3f, hit.ToString());
     }
@@ -141,21 +141,21 @@ public class ReferenceToiTests
     [Fact]
     public void Cylinder_Miss()
     {
-        Assert.False(ReferenceToi.Cylinder(new Vector3(3, 1.1f, 1), new Vector3(-6, 0, 0), 0.5f, Cyl, out _));
-        Assert.False(ReferenceToi.Cylinder(new Vector3(0, 0, 3.1f), new Vector3(4, 0, 0), 0.5f, Cyl, out _));
+        Assert.False(TimeOfImpact.Cylinder(new Vector3(3, 1.1f, 1), new Vector3(-6, 0, 0), 0.5f, Cyl, out _));
+        Assert.False(TimeOfImpact.Cylinder(new Vector3(0, 0, 3.1f), new Vector3(4, 0, 0), 0.5f, Cyl, out _));
     }
 
     [Fact]
     public void Sphere_HeadOn_AndGlancing()
     {
         var obstacle = new Sphere(Vector3.Zero, 1f);
-        Assert.True(ReferenceToi.Sphere(new Vector3(5, 0, 0), new Vector3(-8, 0, 0), 0.5f, obstacle, out var hit));
+        Assert.True(TimeOfImpact.Sphere(new Vector3(5, 0, 0), new Vector3(-8, 0, 0), 0.5f, obstacle, out var hit));
         Assert.Equal((5 - 1.5f) / 8, hit.Time, Tol);
         Assert.Equal(Vector3.UnitX, hit.Normal);
         // Offset 0.9: contact when x² + 0.81 = 2.25.
-        Assert.True(ReferenceToi.Sphere(new Vector3(5, 0.9f, 0), new Vector3(-8, 0, 0), 0.5f, obstacle, out hit));
+        Assert.True(TimeOfImpact.Sphere(new Vector3(5, 0.9f, 0), new Vector3(-8, 0, 0), 0.5f, obstacle, out hit));
         Assert.Equal((5 - 1.2f) / 8, hit.Time, Tol);
-        Assert.False(ReferenceToi.Sphere(new Vector3(5, 1.6f, 0), new Vector3(-8, 0, 0), 0.5f, obstacle, out _));
+        Assert.False(TimeOfImpact.Sphere(new Vector3(5, 1.6f, 0), new Vector3(-8, 0, 0), 0.5f, obstacle, out _));
     }
 }
 

@@ -1,62 +1,17 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
 
-namespace AcDream.Core.Physics.Reference;
-
-/// <summary>Which feature of a shape a swept sphere touched first.</summary>
-public enum ReferenceFeature : byte
-{
-    /// <summary>No contact.</summary>
-    None = 0,
-    /// <summary>The sphere already touched the shape and was moving into it (time 0).</summary>
-    Resting,
-    /// <summary>A polygon's face (its interior).</summary>
-    Face,
-    /// <summary>A polygon's edge.</summary>
-    Edge,
-    /// <summary>A polygon's vertex.</summary>
-    Vertex,
-    /// <summary>A cylinder's curved side.</summary>
-    CylinderSide,
-    /// <summary>A cylinder's top or bottom disc.</summary>
-    CylinderCap,
-    /// <summary>A cylinder's top or bottom rim (found by conservative advancement).</summary>
-    CylinderRim,
-    /// <summary>A sphere.</summary>
-    Sphere,
-}
-
-/// <summary>The first contact of a swept sphere: when (fraction of the sweep), the contact normal (pointing from the shape to the sphere's centre), and the feature.</summary>
-public readonly struct ReferenceHit
-{
-    /// <summary>Creates a hit.</summary>
-    public ReferenceHit(float time, Vector3 normal, ReferenceFeature feature)
-    {
-        Time = time;
-        Normal = normal;
-        Feature = feature;
-    }
-
-    /// <summary>The fraction of the displacement travelled at first contact, in [0, 1].</summary>
-    public float Time { get; }
-    /// <summary>The unit contact normal, from the shape towards the sphere's centre.</summary>
-    public Vector3 Normal { get; }
-    /// <summary>The feature touched.</summary>
-    public ReferenceFeature Feature { get; }
-
-    /// <inheritdoc />
-    public override string ToString() => $"t={Time} n={Normal} {Feature}";
-}
+namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>
 /// Exact time of impact of a sphere (centre <c>c</c>, radius <c>r</c>) moving by <c>d</c> over the sweep
 /// fraction t ∈ [0, 1], against polygons (face, edges, vertices), world-Z cylinders and spheres. Not a
-/// retail algorithm: the ground truth the retail sub-stepping is measured against. Every test is the
+/// retail algorithm: the runtime's casts are built on it (<see cref="Queries.ShapeSweep"/>), and the benchmark's
+/// reference sweep measures the retail sub-stepping against it. Every test is the
 /// smallest root of the distance equation |c + t·d − shape| = r; shapes are convex, so a sphere that is
 /// not approaching a shape at t = 0 never reaches it later in the same straight sweep.
 /// </summary>
-public static class ReferenceToi
+public static class TimeOfImpact
 {
     /// <summary>
     /// A sphere closer to a shape than its radius plus this slop counts as touching: it is stopped at t = 0
@@ -170,7 +125,7 @@ public static class ReferenceToi
     }
 
     /// <summary>Time of impact with a sphere obstacle.</summary>
-    public static bool Sphere(Vector3 c, Vector3 d, float r, in Sphere obstacle, out ReferenceHit hit)
+    public static bool Sphere(Vector3 c, Vector3 d, float r, in Sphere obstacle, out ImpactHit hit)
     {
         hit = default;
         var m = c - obstacle.Center;
@@ -180,7 +135,7 @@ public static class ReferenceToi
             return Resting(m, dist, d, Vector3.UnitZ, out hit);
         if (!Point(c, d, reach, obstacle.Center, out float t, out var n))
             return false;
-        hit = new ReferenceHit(t, n, ReferenceFeature.Sphere);
+        hit = new ImpactHit(t, n, ImpactFeature.Sphere);
         return true;
     }
 
@@ -188,17 +143,17 @@ public static class ReferenceToi
     /// Time of impact with a convex polygon: its face (from the front; from either side unless
     /// <see cref="PolygonSides.Single"/>), its edges and its vertices, whichever comes first.
     /// </summary>
-    public static bool Polygon(Vector3 c, Vector3 d, float r, Polygon polygon, out ReferenceHit hit) =>
+    public static bool Polygon(Vector3 c, Vector3 d, float r, Polygon polygon, out ImpactHit hit) =>
         Polygon(c, d, r, polygon, Vector3.Zero, out hit);
 
     /// <summary>
-    /// <see cref="Polygon(Vector3, Vector3, float, Geometry.Polygon, out ReferenceHit)"/> for a polygon placed
+    /// <see cref="Polygon(Vector3, Vector3, float, Geometry.Polygon, out ImpactHit)"/> for a polygon placed
     /// <paramref name="shift"/> from the frame of <paramref name="start"/> (a neighbouring landblock's
     /// terrain). A ray's edge test runs in the start's frame, where the shifted corners of terrain are exact, so
     /// it stays watertight across landblock seams (shifting the start instead rounds it differently for each
     /// landblock).
     /// </summary>
-    internal static bool Polygon(Vector3 start, Vector3 d, float r, Polygon polygon, Vector3 shift, out ReferenceHit hit)
+    internal static bool Polygon(Vector3 start, Vector3 d, float r, Polygon polygon, Vector3 shift, out ImpactHit hit)
     {
         hit = default;
         var c = start - shift;
@@ -239,7 +194,7 @@ public static class ReferenceToi
 
         float best = float.PositiveInfinity;
         var bestNormal = Vector3.Zero;
-        var feature = ReferenceFeature.None;
+        var feature = ImpactFeature.None;
         if (!behind)
         {
             // A start touching the polygon (within the slop) is judged at once. Its distance from the polygon is
@@ -269,7 +224,7 @@ public static class ReferenceToi
                 {
                     best = t;
                     bestNormal = n;
-                    feature = ReferenceFeature.Face;
+                    feature = ImpactFeature.Face;
                 }
             }
         }
@@ -291,22 +246,22 @@ public static class ReferenceToi
             {
                 best = te;
                 bestNormal = ne;
-                feature = ReferenceFeature.Edge;
+                feature = ImpactFeature.Edge;
             }
             if (Point(c, d, r, a, out float tv, out var nv) && tv < best && (!singleSided || s0 + tv * vn >= 0f))
             {
                 best = tv;
                 bestNormal = nv;
-                feature = ReferenceFeature.Vertex;
+                feature = ImpactFeature.Vertex;
             }
         }
         return Found(best, bestNormal, feature, out hit);
     }
 
-    private static bool Found(float time, Vector3 normal, ReferenceFeature feature, out ReferenceHit hit)
+    private static bool Found(float time, Vector3 normal, ImpactFeature feature, out ImpactHit hit)
     {
-        hit = feature == ReferenceFeature.None ? default : new ReferenceHit(time, normal, feature);
-        return feature != ReferenceFeature.None;
+        hit = feature == ImpactFeature.None ? default : new ImpactHit(time, normal, feature);
+        return feature != ImpactFeature.None;
     }
 
     /// <summary>
@@ -349,7 +304,7 @@ public static class ReferenceToi
     /// side and caps analytically, the rims (a torus, a quartic) by conservative advancement on the exact
     /// distance to within 1e-6 m.
     /// </summary>
-    public static bool Cylinder(Vector3 c, Vector3 d, float r, in CylSphere cylinder, out ReferenceHit hit)
+    public static bool Cylinder(Vector3 c, Vector3 d, float r, in CylSphere cylinder, out ImpactHit hit)
     {
         hit = default;
         var low = cylinder.LowPoint;
@@ -363,7 +318,7 @@ public static class ReferenceToi
 
         float best = float.PositiveInfinity;
         var bestNormal = Vector3.Zero;
-        var feature = ReferenceFeature.None;
+        var feature = ImpactFeature.None;
 
         // Side: the 2-D circle of radius R + r while the centre's height is within the cylinder's.
         var m2 = new Vector2(c.X - low.X, c.Y - low.Y);
@@ -382,7 +337,7 @@ public static class ReferenceToi
                     var p2 = Vector2.Normalize(m2 + t * d2);
                     best = t;
                     bestNormal = new Vector3(p2, 0f);
-                    feature = ReferenceFeature.CylinderSide;
+                    feature = ImpactFeature.CylinderSide;
                 }
             }
         }
@@ -409,21 +364,21 @@ public static class ReferenceToi
                     {
                         best = t;
                         bestNormal = Vector3.Normalize(p - q);
-                        feature = ReferenceFeature.CylinderRim;
+                        feature = ImpactFeature.CylinderRim;
                     }
                     break;
                 }
                 t += gap / speed;
             }
         }
-        if (feature == ReferenceFeature.None)
+        if (feature == ImpactFeature.None)
             return false;
-        hit = new ReferenceHit(best, bestNormal, feature);
+        hit = new ImpactHit(best, bestNormal, feature);
         return true;
     }
 
     private static void TryCap(Vector3 c, Vector3 d, float t, Vector3 low, float radius, Vector3 normal,
-        ref float best, ref Vector3 bestNormal, ref ReferenceFeature feature)
+        ref float best, ref Vector3 bestNormal, ref ImpactFeature feature)
     {
         if (t < 0f || t > 1f || t >= best)
             return;
@@ -433,17 +388,17 @@ public static class ReferenceToi
             return;
         best = t;
         bestNormal = normal;
-        feature = ReferenceFeature.CylinderCap;
+        feature = ImpactFeature.CylinderCap;
     }
 
     /// <summary>A touching sphere: a hit at t = 0 when it moves into the shape (by more than <paramref name="minDepth"/> over the sweep), none otherwise.</summary>
-    private static bool Resting(Vector3 away, float dist, Vector3 d, Vector3 fallbackNormal, out ReferenceHit hit, float minDepth = 0f)
+    private static bool Resting(Vector3 away, float dist, Vector3 d, Vector3 fallbackNormal, out ImpactHit hit, float minDepth = 0f)
     {
         var normal = dist > 1e-7f ? away / dist : fallbackNormal;
         float into = Vector3.Dot(normal, d);
         if (into < -ApproachTolerance * d.Length() && into < -minDepth)
         {
-            hit = new ReferenceHit(0f, normal, ReferenceFeature.Resting);
+            hit = new ImpactHit(0f, normal, ImpactFeature.Resting);
             return true;
         }
         hit = default;
