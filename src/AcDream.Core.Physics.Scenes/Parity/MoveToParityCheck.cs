@@ -1,20 +1,19 @@
 using System;
 using System.Globalization;
-using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Parity;
 
 /// <summary>
-/// Runs a manager parity file's MoveTo script through the motion layer's MoveToManager and the body step, and compares
+/// Runs a MoveTo parity file's script through the motion layer's MoveToManager and the body step, and compares
 /// every frame with ACE's: the position within <see cref="ParityCheck.Tolerance"/>, the heading within
 /// <see cref="HeadingTolerance"/>, the cell, contact and walkable flags, the interpreted forward and turn commands and
 /// speeds (to the bit), the manager's movement type, command, aim turn and fail count, and the frame and code of the
 /// completion. Where ACE departs from the decompile a named departure says what is compared instead, and the line says
-/// so (never "ok" for what was not compared). The position managers' files go to <see cref="PositionManagerParityCheck"/>.
+/// so (never "ok" for what was not compared). (The position managers' files of the same data: <see cref="PositionManagerParityCheck"/>.)
 /// </summary>
-internal static class ManagerParityCheck
+internal static class MoveToParityCheck
 {
     /// <summary>
     /// The heading tolerance, degrees: ACE computes headings and set_heading in float (AFrame.get_heading/set_heading,
@@ -33,10 +32,8 @@ internal static class ManagerParityCheck
 
     public static ParityReport Check(ParitySet set)
     {
-        if (set.Positions is { } positions)
-            return PositionManagerParityCheck.Check(positions);
-        if (set.Managers is not { } file)
-            throw new ArgumentException($"{set.Name} is not a managers' file.", nameof(set));
+        if (set.MoveTo is not { } file)
+            throw new ArgumentException($"{set.Name} is not a MoveTo file.", nameof(set));
         int shift = file.Name.StartsWith("turnto-heading", StringComparison.Ordinal) ? 1 : 0;
         var engine = new PhysicsEngine(file.World);
         var motion = new ObjectMotion(file.Table, file.Skills);
@@ -149,10 +146,15 @@ internal static class ManagerParityCheck
             : file.Frames.Length > 0 && Array.Exists(file.Frames[0].Calls, c => c.Kind == MoveToKind.MoveToObject)
                 ? "ACE's call names no walk/run threshold: ACE's default 1 m is used as ACE ran it (MovementParameters.cs:49-50; retail's is 15 m)"
                 : null;
-        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note) { Verdict = verdict };
+        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note)
+        {
+            Verdict = verdict,
+            Threshold = $"within {ParityCheck.Tolerance.ToString("0e0", c)} m, headings within {HeadingTolerance.ToString("0e0", c)} deg",
+            Departure = shift != 0 ? "turn-starts-at-call" : clock != 0 ? "progress-clock" : null,
+        };
     }
 
-    private static string? Difference(in ManagerFrame e, in MoverState a, ObjectMotion m, bool endedNow, int? aceFails, int clock)
+    private static string? Difference(in MoveToFrame e, in MoverState a, ObjectMotion m, bool endedNow, int? aceFails, int clock)
     {
         if (a.Position.CellId != e.Cell) return $"cell: expected 0x{e.Cell:X8}, actual 0x{a.Position.CellId:X8}";
         if (a.Contact != e.Contact) return $"contact: expected {e.Contact}, actual {a.Contact}";
@@ -181,7 +183,7 @@ internal static class ManagerParityCheck
     private static string Name(MoveToError e) => e == MoveToError.None ? "None" : e.ToString();
 
     // A target update the library refuses names the frame's recorded target position.
-    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, ManagerParityFile file, in MoverState state, in Body.BodyState body, int f)
+    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, MoveToParityFile file, in MoverState state, in Body.BodyState body, int f)
     {
         try
         {

@@ -4,66 +4,20 @@ using System.Globalization;
 using System.IO;
 using System.Numerics;
 using System.Text.Json;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Parity;
 
-/// <summary>A MoveTo call a manager parity file makes before a frame's time passes.</summary>
-internal readonly record struct ManagerCall(MoveToKind Kind, Position Target, MoveToParameters Parameters, uint ObjectId)
-{
-    /// <summary>The JSON path of the recorded command the call was read from (for the errors of a refused call).</summary>
-    public string Path { get; init; } = string.Empty;
-}
-
-/// <summary>One frame of a manager parity file: the calls, the target update delivered (the target's position and the interpolated one), and ACE's state after it.</summary>
-internal readonly record struct ManagerFrame(
-    ManagerCall[] Calls,
-    Position? TargetUpdate,
-    Position? InterpolatedUpdate,
-    Vector3 Origin,
-    uint Cell,
-    float Heading,
-    bool Contact,
-    bool Walkable,
-    uint ForwardCommand,
-    float ForwardSpeed,
-    uint TurnCommand,
-    float TurnSpeed,
-    MoveToKind Kind,
-    uint Command,
-    uint AuxCommand,
-    int FailProgressCount,
-    string? Completed);
-
-/// <summary>A manager parity file read (format "ace-manager-parity"): the motion world and table, the mover's start, the frames.</summary>
-internal sealed record ManagerParityFile(
-    string Name,
-    string Description,
-    PhysicsWorld World,
-    MoverDescription Mover,
-    MotionTable Table,
-    RetailSkills Skills,
-    MoverState Start,
-    double FrameSeconds,
-    ManagerFrame[] Frames);
-
 /// <summary>
-/// Reads an "ace-manager-parity" file (ACE's MoveToManager, StickyManager and InterpolationManager recorded quantum by
+/// Reads a MoveTo file of the "ace-manager-parity" data (ACE's MoveToManager, StickyManager and InterpolationManager recorded quantum by
 /// quantum on the ace-motion world and table; described in the reference data's README). The MoveTo calls are read from
 /// the frames' recorded ACE calls; a MoveToObject's target updates from the recorded TargetInfo (a new lastUpdateTime).
 /// Files of the position managers (sticky, interpolate) are read by <see cref="PositionManagerParityReader"/>. Errors name the JSON path. Load-time only.
 /// </summary>
-internal static class ManagerParityReader
+internal static class MoveToParityReader
 {
-    public const string Format = "ace-manager-parity";
-
-    /// <summary>The position managers' files (sticky, interpolate), read by <see cref="PositionManagerParityReader"/>.</summary>
-    public static bool IsPositionManagerFile(string name) =>
-        name.StartsWith("sticky", StringComparison.Ordinal) || name.StartsWith("interpolate", StringComparison.Ordinal);
-
-    public static ManagerParityFile Read(JsonElement root, string name, string directory)
+    public static MoveToParityFile Read(JsonElement root, string name, string directory)
     {
         var o = new JsonObj(root, string.Empty);
         // Read by ParityReader (format, version) or words for a reader (the rest; "events" repeats the frames' calls).
@@ -94,7 +48,7 @@ internal static class ManagerParityReader
         var items = o.Array("frames");
         if (items.Count == 0 || items.Count > SceneLoader.MaxFramesPerMover)
             throw new SceneFormatException("frames", $"needs 1 to {SceneLoader.MaxFramesPerMover} frames, got {items.Count}.");
-        var frames = new ManagerFrame[items.Count];
+        var frames = new MoveToFrame[items.Count];
         double lastUpdate = double.NaN;
         var previousOrigin = origin;
         for (int i = 0; i < frames.Length; i++)
@@ -104,7 +58,7 @@ internal static class ManagerParityReader
         }
         string description = o.String("description", string.Empty) ?? string.Empty;
         o.End();
-        return new ManagerParityFile(name, description, world, mover, table, skills, start, 1.0 / rate, frames);
+        return new MoveToParityFile(name, description, world, mover, table, skills, start, 1.0 / rate, frames);
     }
 
     /// <summary>The file's mover, which must be the retail player with the file's table: its Run skill.</summary>
@@ -124,10 +78,10 @@ internal static class ManagerParityReader
         }
     }
 
-    private static ManagerFrame ReadFrame(JsonElement e, string path, Vector3 before, ref double lastUpdate)
+    private static MoveToFrame ReadFrame(JsonElement e, string path, Vector3 before, ref double lastUpdate)
     {
         var f = new JsonObj(e, path);
-        var calls = new List<ManagerCall>();
+        var calls = new List<MoveToCall>();
         string? completed = null;
         foreach (var (value, at) in f.Array("commands"))
         {
@@ -177,7 +131,7 @@ internal static class ManagerParityReader
                 "soughtPosition", "topLevelObjectID");
             mv.End();
         }
-        var frame = new ManagerFrame([.. calls], update, interpolated, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
+        var frame = new MoveToFrame([.. calls], update, interpolated, f.Vec3("origin"), f.Id("cell"), f.Float("aceHeading"), f.Bool("contact", false),
             f.Bool("onWalkable", false), i.Id("forwardCommand"), i.Float("forwardSpeed"), i.Id("turnCommand"), i.Float("turnSpeed"), kind, command, aux,
             fails, completed);
         // The sidestep is not part of a MoveTo; the rest is ACE's state beside what is compared (the frame's index
@@ -202,7 +156,7 @@ internal static class ManagerParityReader
     //   PhysicsObj.TurnToHeading(DesiredHeading 135) -> ...
     //   PhysicsObj.MoveToObject(0x50000002, DistanceToObject 0.6, CanRun) -> ...
     // A position given to 4 decimals ("20 m ahead of the start of this call") is rebuilt from the recorded origin before the call.
-    private static ManagerCall ParseCall(string text, string path, Vector3 before)
+    private static MoveToCall ParseCall(string text, string path, Vector3 before)
     {
         var c = CultureInfo.InvariantCulture;
         if (text.StartsWith("PhysicsObj.MoveToPosition((", StringComparison.Ordinal))
@@ -220,14 +174,14 @@ internal static class ManagerParityReader
             if (Vector3.Distance(ahead, target) < 1e-3f)
                 target = ahead;
             var p = Parameters(Between(text, "MovementParameters{", "}", path), path);
-            return new ManagerCall(MoveToKind.MoveToPosition, new Position(LandDefs.LandCellAt(0xA9B4, target), target), p, 0);
+            return new MoveToCall(MoveToKind.MoveToPosition, new Position(LandDefs.LandCellAt(0xA9B4, target), target), p, 0);
         }
         if (text.StartsWith("PhysicsObj.TurnToHeading(DesiredHeading ", StringComparison.Ordinal))
         {
             string h = Between(text, "DesiredHeading ", ")", path);
             if (!float.TryParse(h, NumberStyles.Float, c, out float heading))
                 throw new SceneFormatException(path, $"unreadable heading in \"{text}\".");
-            return new ManagerCall(MoveToKind.TurnToHeading, default, MoveToParameters.Default with { DesiredHeading = heading }, 0);
+            return new MoveToCall(MoveToKind.TurnToHeading, default, MoveToParameters.Default with { DesiredHeading = heading }, 0);
         }
         if (text.StartsWith("PhysicsObj.MoveToObject(", StringComparison.Ordinal))
         {
@@ -235,7 +189,7 @@ internal static class ManagerParityReader
             int comma = args.IndexOf(',');
             uint id = comma > 2 && uint.TryParse(args[2..comma], NumberStyles.AllowHexSpecifier, c, out uint v) ? v
                 : throw new SceneFormatException(path, $"unreadable object id in \"{text}\".");
-            return new ManagerCall(MoveToKind.MoveToObject, default, Parameters(args[(comma + 1)..], path), id);
+            return new MoveToCall(MoveToKind.MoveToObject, default, Parameters(args[(comma + 1)..], path), id);
         }
         throw new SceneFormatException(path, $"unknown call \"{text}\" (known: PhysicsObj.MoveToPosition, TurnToHeading, MoveToObject).");
     }
