@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics;
 
@@ -59,51 +58,4 @@ public enum PhysicsState : uint
     Sledding = 0x800000,
     /// <summary>FROZEN_PS.</summary>
     Frozen = 0x1000000,
-}
-
-/// <summary>Retail OBJECTINFO state bits: what the mover is and how it stands (ACE ObjectInfo.cs).</summary>
-[Flags]
-public enum ObjectInfoState : uint
-{
-    /// <summary>No bit set.</summary>
-    None = 0,
-    /// <summary>The mover touches a contact plane.</summary>
-    Contact = 0x1,
-    /// <summary>The contact plane is walkable.</summary>
-    OnWalkable = 0x2,
-    /// <summary>The mover is the camera.</summary>
-    IsViewer = 0x4,
-    /// <summary>Stop at the first collision.</summary>
-    PathClipped = 0x8,
-    /// <summary>Orientation is not interpolated along the path.</summary>
-    FreeRotate = 0x10,
-    /// <summary>PERFECT_CLIP.</summary>
-    PerfectClip = 0x40,
-    /// <summary>The mover cannot be passed by players.</summary>
-    IsImpenetrable = 0x80,
-    /// <summary>The mover is a player.</summary>
-    IsPlayer = 0x100,
-    /// <summary>The mover slides along edges instead of walking off them.</summary>
-    EdgeSlide = 0x200,
-    /// <summary>The mover ignores creatures.</summary>
-    IgnoreCreatures = 0x400,
-    /// <summary>The mover is a player killer.</summary>
-    IsPK = 0x800,
-    /// <summary>The mover is a PK-lite player.</summary>
-    IsPKLite = 0x1000,
-}
-
-/// <summary>The result of one collision query or insertion step (retail TransitionState).</summary>
-public enum TransitionState
-{
-    /// <summary>No valid result (retail's 0).</summary>
-    Invalid = 0,
-    /// <summary>No collision: the check position stands.</summary>
-    OK = 1,
-    /// <summary>Blocked: the check position must be abandoned.</summary>
-    Collided = 2,
-    /// <summary>The check position was moved to resolve contact; test again.</summary>
-    Adjusted = 3,
-    /// <summary>The check position slid along a surface; test again.</summary>
-    Slid = 4,
 }
