@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using System.Reflection;
 using AcDream.Core.Physics.Diagnostics;
 
 namespace AcDream.Core.Physics.Scenes;
