@@ -49,9 +49,9 @@ public static class Program
                                         scene's collision shapes and every frame in 3D
                                         (default file SCENE.view.html; runs the scene when
                                         no TRAJ)
-          parity DIR                    check the engine against every parity file (*.json.gz) in
-                                        DIR: one line per file; exit 1 when a file misses its
-                                        threshold
+          parity DIR [-v]               check the engine against every parity file (*.json.gz) in
+                                        DIR: one short line per file (verdict and counts; -v:
+                                        every detail); exit 1 when a file misses its threshold
           help                          this text
 
         SCENE is a scene file (JSON, docs/scene-format.md) or a built-in scene name.
@@ -73,6 +73,7 @@ public static class Program
         public readonly List<string> Positional = new();
         public string? Out;
         public bool Diag;
+        public bool Verbose;
         public float Tolerance = TrajectoryReplay.DefaultTolerance;
         public string? Dat;
     }
@@ -104,10 +105,14 @@ public static class Program
                     return 0;
                 case "list":
                     Expect(options, 0, "list takes no arguments");
+                    // The name column is as wide as the longest name, so every description starts in one column.
+                    int width = 0;
+                    foreach (string name in SceneLibrary.Names)
+                        width = Math.Max(width, name.Length);
                     foreach (string name in SceneLibrary.Names)
                     {
                         var scene = SceneLibrary.Load(name);
-                        stdout.WriteLine(Printable($"{name,-10} {scene.Description}"));
+                        stdout.WriteLine(Printable($"{name.PadRight(width)}  {scene.Description}"));
                     }
                     return 0;
                 case "run":
@@ -143,7 +148,7 @@ public static class Program
                         options.Positional.Count > 1 ? options.Positional[1] : null, options.Out, stdout);
                 case "parity":
                     Expect(options, 1, "parity needs DIR");
-                    return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr);
+                    return ParityCheck.CheckDirectory(options.Positional[0], stdout, stderr, options.Verbose);
                 default:
                     throw new UsageException($"unknown command '{command}'");
             }
@@ -220,6 +225,9 @@ public static class Program
                     break;
                 case "--diag":
                     o.Diag = true;
+                    break;
+                case "-v" or "--verbose":
+                    o.Verbose = true;
                     break;
                 case "--dat":
                     if (i + 1 >= args.Length) throw new UsageException("--dat needs a folder holding the DAT files");

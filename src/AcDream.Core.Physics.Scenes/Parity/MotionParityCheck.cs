@@ -107,7 +107,7 @@ internal static class MotionParityCheck
         string? note = departure is { } named
             ? string.Format(CultureInfo.InvariantCulture, "{0} frames within {1:0e0} m under ACE departure {2} ({3})", departed, named.Bound, named.Name, named.Source)
             : null;
-        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note);
+        return new ParityReport(file.Name, false, 1, frames, within, identical, maxDifference, mismatches, firstFailure, note) { Departure = departure?.Name };
     }
 
     /// <summary>

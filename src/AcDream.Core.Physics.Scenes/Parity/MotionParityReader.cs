@@ -285,6 +285,6 @@ internal static class MotionParityReader
             ? v
             : throw new SceneFormatException(path, $"expected a hex motion id in \"{text}\".");
 
-    /// <summary>The world of the manager parity files (ManagerParityReader, PositionManagerParityReader): the recorded door, platform and tree.</summary>
+    /// <summary>The world of the manager parity files (MoveToParityReader, PositionManagerParityReader): the recorded door, platform and tree.</summary>
     internal static PhysicsWorld SharedWorld() => RecordedWorld.Managers();
 }

@@ -28,19 +28,30 @@ public static class ParityCheck
     public static ParityReport CheckFile(string path, Action<int, int>? progress = null)
     {
         var set = ParityReader.ReadFile(path);
-        if (set.ManagerFile)
-            return ManagerParityCheck.Check(set);
+        if (set.Positions is { } positions)
+            return PositionManagerParityCheck.Check(positions);
+        if (set.MoveTo is not null)
+            return MoveToParityCheck.Check(set);
         return set.Motion is not null ? MotionParityCheck.Check(set.Motion) : Check(set, progress);
     }
 
     /// <summary>
-    /// Checks every <c>*.json.gz</c> in <paramref name="directory"/> (sorted by name): one line per file on
-    /// <paramref name="stdout"/>; a malformed file is one line on <paramref name="stderr"/> naming the file and
-    /// the JSON path. Progress goes to <paramref name="stderr"/> when a file takes more than a few seconds.
+    /// Checks every <c>*.json.gz</c> in <paramref name="directory"/> (sorted by name): one short line per file on
+    /// <paramref name="stdout"/> (<see cref="ParityReport.Summary"/>); a malformed file is one line on <paramref name="stderr"/>
+    /// naming the file and the JSON path. Progress goes to <paramref name="stderr"/> when a file takes more than a few seconds.
     /// </summary>
     /// <returns>0 when every file passes, 1 when a file misses its threshold, 2 when a file is malformed or
     /// the directory holds none (2 wins over 1).</returns>
-    public static int CheckDirectory(string directory, TextWriter stdout, TextWriter stderr)
+    public static int CheckDirectory(string directory, TextWriter stdout, TextWriter stderr) =>
+        CheckDirectory(directory, stdout, stderr, verbose: false);
+
+    /// <summary>
+    /// As <see cref="CheckDirectory(string, TextWriter, TextWriter)"/>; with <paramref name="verbose"/> each file's
+    /// line carries every detail (<see cref="ParityReport.ToString"/>: the named departures, notes and percentages).
+    /// </summary>
+    /// <returns>0 when every file passes, 1 when a file misses its threshold, 2 when a file is malformed or
+    /// the directory holds none (2 wins over 1).</returns>
+    public static int CheckDirectory(string directory, TextWriter stdout, TextWriter stderr, bool verbose)
     {
         ArgumentNullException.ThrowIfNull(directory);
         ArgumentNullException.ThrowIfNull(stdout);
@@ -74,7 +85,7 @@ public static class ParityCheck
                         stderr.WriteLine($"{name}: {done} of {ParityReport.Count(total, "run")} ({ms / 1000} s)");
                     }
                 });
-                stdout.WriteLine(report.ToString());
+                stdout.WriteLine(verbose ? report.ToString() : report.Summary());
                 if (!report.Passed) exit = Math.Max(exit, 1);
             }
             catch (SceneFormatException ex)

@@ -6,7 +6,6 @@ using System.Numerics;
 using System.Text.Json;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Parity;
 
@@ -26,6 +25,13 @@ internal static class ParityReader
 
     /// <summary>The format of the real-cell files.</summary>
     public const string RealCellsFormat = "ace-parity-real";
+
+    /// <summary>The managers' data (ACE's MoveToManager, StickyManager and InterpolationManager recorded quantum by quantum).</summary>
+    public const string ManagersFormat = "ace-manager-parity";
+
+    /// <summary>The managers' data's position-manager files (sticky, interpolate), read by <see cref="PositionManagerParityReader"/>; the rest are MoveTo files (<see cref="MoveToParityReader"/>).</summary>
+    public static bool IsPositionManagerFile(string name) =>
+        name.StartsWith("sticky", StringComparison.Ordinal) || name.StartsWith("interpolate", StringComparison.Ordinal);
 
     /// <summary>The most frames a parity file's runs may hold in all (an ACE file holds about 50 000), checked before any run's frames are read.</summary>
     public const int MaxFramesPerFile = 1_000_000;
@@ -65,22 +71,22 @@ internal static class ParityReader
         var o = new JsonObj(root, string.Empty);
         string format = o.String("format");
         int version = o.Int("version", -1);
-        if (format is not (AceFormat or RealCellsFormat or MotionParityReader.Format or ManagerParityReader.Format))
-            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}, {MotionParityReader.Format}, {ManagerParityReader.Format}).");
+        if (format is not (AceFormat or RealCellsFormat or MotionParityReader.Format or ManagersFormat))
+            throw new SceneFormatException("format", $"unknown parity format \"{format}\" (known: {AceFormat}, {RealCellsFormat}, {MotionParityReader.Format}, {ManagersFormat}).");
         if (version != 1)
             throw new SceneFormatException("version", $"unsupported {format} version {version} (this reader reads version 1).");
-        if (format == ManagerParityReader.Format)
+        if (format == ManagersFormat)
         {
             if (root.TryGetProperty("frames", out var mframes) && mframes.ValueKind == JsonValueKind.Array && mframes.GetArrayLength() > MaxFramesPerFile)
                 throw new SceneFormatException("frames", $"the file holds more than {MaxFramesPerFile} frames.");
             // The position managers' files (sticky, interpolate) are read by their own reader (PositionManagerParityCheck).
-            if (ManagerParityReader.IsPositionManagerFile(name))
+            if (IsPositionManagerFile(name))
             {
                 var positions = PositionManagerParityReader.Read(root, name, directory);
-                return new ParitySet(name, positions.World, [], RequireBitIdentical: false, ManagerFile: true, Positions: positions);
+                return new ParitySet(name, positions.World, [], RequireBitIdentical: false, Positions: positions);
             }
-            var managers = ManagerParityReader.Read(root, name, directory);
-            return new ParitySet(name, managers.World, [], RequireBitIdentical: false, Managers: managers, ManagerFile: true);
+            var moveTo = MoveToParityReader.Read(root, name, directory);
+            return new ParitySet(name, moveTo.World, [], RequireBitIdentical: false, MoveTo: moveTo);
         }
         if (format == MotionParityReader.Format)
         {

@@ -55,7 +55,39 @@ public sealed class ParityReport
     /// </summary>
     internal string? Verdict { get; init; }
 
-    /// <summary>One line: the file, pass or fail, the counts, and the first failure.</summary>
+    /// <summary>The threshold for <see cref="Summary"/> when it is not the file's default (for example "within 1e-3 m, headings within 1e-3 deg").</summary>
+    internal string? Threshold { get; init; }
+
+    /// <summary>The named departure from the reference the file is compared under (docs/open-questions.md), for <see cref="Summary"/>.</summary>
+    internal string? Departure { get; init; }
+
+    /// <summary>The check counts bit-identical frames (the position managers' files do not).</summary>
+    internal bool CountsBitIdentical { get; init; } = true;
+
+    /// <summary>Nothing is compared: the file departs from the reference as a whole (<see cref="Verdict"/> says how).</summary>
+    internal bool NothingCompared { get; init; }
+
+    /// <summary>
+    /// One short line: the file, the verdict (ok, FAIL or departs, with the threshold and the named departure), the
+    /// counts, and the first failure; "(more with -v)" when <see cref="ToString"/> says more (a departure's or a
+    /// note's detail).
+    /// </summary>
+    public string Summary()
+    {
+        var c = CultureInfo.InvariantCulture;
+        if (NothingCompared && Passed)
+            return $"{File}: departs (nothing compared) (more with -v)";
+        string need = Threshold ?? (RequireBitIdentical ? "bit-identical" : $"within {ParityCheck.Tolerance.ToString("0e0", c)} m");
+        string line = string.Format(c, "{0}: {1} ({2}){3}; {4}, {5}, {6} within{7}, max {8} m, {9}",
+            File, Passed ? "ok" : "FAIL", need, Departure is null ? string.Empty : $" under departure {Departure}",
+            Count(Runs, "run"), Count(Frames, "frame"), WithinTolerance, CountsBitIdentical ? $", {BitIdentical} bit-identical" : string.Empty,
+            MaxDifference == 0 ? "0" : MaxDifference.ToString("0.###e0", c), Count(FlagMismatches, "flag mismatch", "flag mismatches"));
+        if (!Passed)
+            line = $"{line}; first: {FirstFailure}";
+        return Verdict is not null || Departures is not null ? $"{line} (more with -v)" : line;
+    }
+
+    /// <summary>One line with every detail (the -v line of the tool's parity command): the file, pass or fail, the counts, the named departures and notes, and the first failure.</summary>
     public override string ToString()
     {
         var c = CultureInfo.InvariantCulture;

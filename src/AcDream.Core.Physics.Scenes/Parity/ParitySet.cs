@@ -8,9 +8,8 @@ namespace AcDream.Core.Physics.Parity;
 /// <param name="Runs">The runs.</param>
 /// <param name="RequireBitIdentical">Every position must match to the last bit (the ACE door file); otherwise within <see cref="ParityCheck.Tolerance"/>.</param>
 /// <param name="Motion">For a motion-layer file ("ace-motion-parity"), the file read; its runs are then empty.</param>
-/// <param name="Managers">For a MoveTo file of the managers' data ("ace-manager-parity"), the file read.</param>
+/// <param name="MoveTo">For a MoveTo file of the managers' data ("ace-manager-parity"), the file read.</param>
 /// <param name="Positions">For a position managers' file of the managers' data (sticky, interpolate), the file read.</param>
-/// <param name="ManagerFile">The file is a managers' file .</param>
 internal sealed record ParitySet(string Name, PhysicsWorld World, IReadOnlyList<ParityRun> Runs, bool RequireBitIdentical,
-    MotionParityFile? Motion = null, ManagerParityFile? Managers = null, bool ManagerFile = false,
+    MotionParityFile? Motion = null, MoveToParityFile? MoveTo = null,
     PositionManagerParityFile? Positions = null);

@@ -8,7 +8,7 @@ namespace AcDream.Core.Physics.Parity;
 /// <summary>
 /// Runs a position managers' parity file (sticky, interpolate) through ObjectMotion's PositionManager and the body
 /// step, and compares the frames where ACE follows retail with ACE's: the position within <see cref="Tolerance"/>, the
-/// landblock, the heading within <see cref="ManagerParityCheck.HeadingTolerance"/>. Where ACE departs, the line names
+/// landblock, the heading within <see cref="MoveToParityCheck.HeadingTolerance"/>. Where ACE departs, the line names
 /// the departure, what retail does and what is compared instead (or that nothing is); it never says ok for frames
 /// not compared (docs/open-questions.md, "The position managers").
 /// </summary>
@@ -121,7 +121,7 @@ internal static class PositionManagerParityCheck
     {
         double dh = Math.Abs((double)actual - expected);
         dh = Math.Min(dh, 360.0 - dh);
-        return !(dh <= ManagerParityCheck.HeadingTolerance);
+        return !(dh <= MoveToParityCheck.HeadingTolerance);
     }
 
     private static string Counts(int frames, int within, double max, int mismatches)
@@ -132,10 +132,18 @@ internal static class PositionManagerParityCheck
     }
 
     private static string Ok => string.Format(CultureInfo.InvariantCulture, "ok (within {0} m, headings within {1} deg)",
-        Tolerance.ToString("0e0", CultureInfo.InvariantCulture), ManagerParityCheck.HeadingTolerance.ToString("0e0", CultureInfo.InvariantCulture));
+        Tolerance.ToString("0e0", CultureInfo.InvariantCulture), MoveToParityCheck.HeadingTolerance.ToString("0e0", CultureInfo.InvariantCulture));
 
-    private static ParityReport Report(PositionManagerParityFile file, (int Frames, int Within, double Max, int Mismatches, string? First) r, string verdict) =>
-        new(file.Name, false, 1, r.Frames, r.Within, 0, r.Max, r.Mismatches, r.First) { Verdict = verdict };
+    private static ParityReport Report(PositionManagerParityFile file, (int Frames, int Within, double Max, int Mismatches, string? First) r, string verdict,
+        string? departure = null) =>
+        new(file.Name, false, 1, r.Frames, r.Within, 0, r.Max, r.Mismatches, r.First)
+        {
+            Verdict = verdict,
+            Threshold = string.Format(CultureInfo.InvariantCulture, "within {0} m, headings within {1} deg",
+                Tolerance.ToString("0e0", CultureInfo.InvariantCulture), MoveToParityCheck.HeadingTolerance.ToString("0e0", CultureInfo.InvariantCulture)),
+            Departure = departure,
+            CountsBitIdentical = false,
+        };
 
     // sticky: frame for frame until our stick ends; ACE's ends one quantum later (quantum-clock), after which the two rest apart.
     private static ParityReport StickyReport(PositionManagerParityFile file, Ours ours)
@@ -155,7 +163,7 @@ internal static class PositionManagerParityCheck
         string clock = string.Format(c, QuantumClock, ours.StickEnded, aceEnded);
         string counts = Counts(r.Frames, r.Within, r.Max, r.Mismatches);
         return Report(file, r, string.Format(c, "{0} frames 0-{1} under {2}; frames {3}-{4} not compared (both at rest, {5:0.###} m apart: ACE's extra quantum); {6}",
-            r.First is null ? Ok : "compared", ours.StickEnded, clock, aceEnded, last, apart, counts));
+            r.First is null ? Ok : "compared", ours.StickEnded, clock, aceEnded, last, apart, counts), "quantum-clock");
     }
 
     // interpolate-applied-offset: ACE with its two slips neutralised; compared with ACE except where its UseTime throws.
@@ -186,7 +194,7 @@ internal static class PositionManagerParityCheck
         string departure = string.Format(c, BlipFailedNode, from, to, Xy(node.Frame.Origin));
         return Report(file, merged, string.Format(c, "{0} frames 0-{1} and {2}-{3} under {4} ({5} of {6} there); {7}",
             merged.Item5 is null ? Ok : "compared", from - 1, to + 1, file.Frames.Length - 1, departure, blipped, to - from + 1,
-            Counts(merged.Item1, merged.Item2, merged.Item3, merged.Item4)));
+            Counts(merged.Item1, merged.Item2, merged.Item3, merged.Item4)), "blip-failed-node");
     }
 
     // interpolate: ACE as shipped never applies the offset; nothing is compared, the line says what each does.
@@ -247,7 +255,7 @@ internal static class PositionManagerParityCheck
             + "ours (retail's adjust_offset) moves through the transition (at most {7:0.###} m a quantum, 2 x get_adjusted_max_speed), comes within {8} m of {9} of the {10} reported points before the next one (counting the blips), stops at the door at y {11:0.##}, blips {12} times (frames {13}: the failed node behind the door, then the 150 m update) and ends at 0x{14:X8} {15}, as interpolate-applied-offset shows",
             aceJumps, n, firstJump, firstJump + (lastJump - firstJump) / Math.Max(1, aceJumps - 1), lastJump, aceMoving, aceThrew,
             smooth, ReachedDistance.ToString(c), reached, reports, doorY, blips, blipFrames, ours.Cells[^1], Xy(end));
-        return new ParityReport(file.Name, false, 1, 0, 0, 0, 0, 0, null) { Verdict = verdict };
+        return new ParityReport(file.Name, false, 1, 0, 0, 0, 0, 0, null) { Verdict = verdict, NothingCompared = true };
     }
 
     /// <summary>ACE's position is one of the reported points (horizontally within <see cref="Tolerance"/>: placement settles it 0.005 m up).</summary>

@@ -2,38 +2,9 @@ using System;
 using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Parity;
-
-/// <summary>
-/// One frame of a position managers' parity file: the InterpolateTo or stick_to_object call made before the frame's
-/// time passes, the sticky target's position after the frame (the driver moves it after the mover's quantum), ACE's
-/// state after it, and whether ACE's quantum threw and whether ACE's stick is still held.
-/// </summary>
-internal readonly record struct PositionFrame(
-    Position? InterpolateTo,
-    uint StickTo,
-    Position? Target,
-    Vector3 Origin,
-    uint Cell,
-    float Heading,
-    bool AceThrew,
-    bool AceStuck);
-
-/// <summary>A position managers' parity file read (format "ace-manager-parity", files sticky* and interpolate*).</summary>
-internal sealed record PositionManagerParityFile(
-    string Name,
-    PhysicsWorld World,
-    MoverDescription Mover,
-    MotionTable Table,
-    RetailSkills Skills,
-    MoverState Start,
-    Position TargetStart,
-    double FrameSeconds,
-    PositionFrame[] Frames);
 
 /// <summary>
 /// Reads the position managers' files of the manager parity data (StickyManager and InterpolationManager recorded
@@ -53,7 +24,7 @@ internal static class PositionManagerParityReader
         var table = MotionParityReader.ReadTable(o, directory);
         double rate = MotionParityReader.ReadRate(o);
         var m = o.Obj("mover");
-        var skills = ManagerParityReader.RetailPlayerSkills(m, table);
+        var skills = MoveToParityReader.RetailPlayerSkills(m, table);
         uint id = m.Has("id") ? m.Id("id") : 0x50000001u;
         var mover = MoverDescription.Player(objectId: id, stepDownHeight: 0.04f);
         MotionParityReader.Informational(m, "weenie", "state", "runRate");

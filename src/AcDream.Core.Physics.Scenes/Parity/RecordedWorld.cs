@@ -33,13 +33,10 @@ internal static class RecordedWorld
     /// <summary>The platform's extents and place.</summary>
     internal static readonly BoxElement Platform = new([-4f, 4f, -4f, 4f, 0f, 2f], [60f, 150f, 0f]);
 
-    /// <summary>The elements a motion file's "world" object may name: the landblock, the door and the platform always, "box2" when the file adds it.</summary>
-    internal static readonly string[] MotionElements = ["landblock", "door", "platform", "box2"];
-
     /// <summary>
     /// The world a motion file's "world" object describes (its values are sentences, checked against what is
-    /// built): every field must be one of <see cref="MotionElements"/> (an unknown one is refused with a
-    /// did-you-mean), the landblock, door and platform are required, and a box's extents and place are read from
+    /// built): the landblock, door and platform are required, "box2" is optional, any other field is refused (with a
+    /// did-you-mean), and a box's extents and place are read from
     /// its sentence ("x a..b, y c..d, z e..f ... at landblock-local (X,Y,Z)").
     /// </summary>
     public static PhysicsWorld FromMotionFile(JsonObj world)

@@ -5,36 +5,9 @@ using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Reference;
 
-/// <summary>The outcome of one <see cref="ReferenceSweep.Move"/>.</summary>
-public readonly struct ReferenceMoveResult
-{
-    /// <summary>Creates a result.</summary>
-    public ReferenceMoveResult(Vector3 position, int contacts, Vector3 firstNormal, Vector3 lastNormal, float firstContactDistance)
-    {
-        Position = position;
-        Contacts = contacts;
-        FirstNormal = firstNormal;
-        LastNormal = lastNormal;
-        FirstContactDistance = firstContactDistance;
-    }
-
-    /// <summary>Where the mover ends.</summary>
-    public Vector3 Position { get; }
-    /// <summary>How many contacts stopped or deflected the motion (0: moved freely).</summary>
-    public int Contacts { get; }
-    /// <summary>The first contact's normal (as slid along: horizontal for a grounded mover), or zero.</summary>
-    public Vector3 FirstNormal { get; }
-    /// <summary>The last contact's normal, or zero.</summary>
-    public Vector3 LastNormal { get; }
-    /// <summary>How far the mover travelled before its first contact (metres), or the whole distance.</summary>
-    public float FirstContactDistance { get; }
-    /// <summary>Whether anything was touched.</summary>
-    public bool Collided => Contacts > 0;
-}
-
 /// <summary>
 /// The ground truth for the door benchmark: the mover's spheres swept continuously (no sub-steps) with
-/// the exact times of impact of <see cref="ReferenceToi"/> against every shape of a <see cref="ReferenceScene"/>;
+/// the exact times of impact of <see cref="TimeOfImpact"/> against every shape of a <see cref="ReferenceScene"/>;
 /// the mover moves to the earliest contact and slides along it, up to <see cref="MaxContacts"/> times per
 /// move (two non-parallel walls stop a grounded mover; three planes stop a free one). A grounded mover
 /// moves horizontally only and slides along the horizontal part of each contact normal (no step-up or
@@ -136,7 +109,7 @@ public sealed class ReferenceSweep
     }
 
     /// <summary>The earliest contact of any of the mover's spheres (at <paramref name="origin"/>) moving by <paramref name="displacement"/>.</summary>
-    public bool Earliest(ReadOnlySpan<Sphere> spheres, Vector3 origin, Vector3 displacement, out ReferenceHit hit)
+    public bool Earliest(ReadOnlySpan<Sphere> spheres, Vector3 origin, Vector3 displacement, out ImpactHit hit)
     {
         hit = default;
         bool found = false;
@@ -147,18 +120,18 @@ public sealed class ReferenceSweep
             float r = spheres[s].Radius;
             var polygons = Scene.Polygons;
             for (int i = 0; i < polygons.Count; i++)
-                Consider(ReferenceToi.Polygon(c, displacement, r, polygons[i], out var h), h, ref best, ref hit, ref found);
+                Consider(TimeOfImpact.Polygon(c, displacement, r, polygons[i], out var h), h, ref best, ref hit, ref found);
             var cylinders = Scene.Cylinders;
             for (int i = 0; i < cylinders.Count; i++)
-                Consider(ReferenceToi.Cylinder(c, displacement, r, cylinders[i], out var h), h, ref best, ref hit, ref found);
+                Consider(TimeOfImpact.Cylinder(c, displacement, r, cylinders[i], out var h), h, ref best, ref hit, ref found);
             var obstacles = Scene.Spheres;
             for (int i = 0; i < obstacles.Count; i++)
-                Consider(ReferenceToi.Sphere(c, displacement, r, obstacles[i], out var h), h, ref best, ref hit, ref found);
+                Consider(TimeOfImpact.Sphere(c, displacement, r, obstacles[i], out var h), h, ref best, ref hit, ref found);
         }
         return found;
     }
 
-    private static void Consider(bool ok, in ReferenceHit candidate, ref float best, ref ReferenceHit hit, ref bool found)
+    private static void Consider(bool ok, in ImpactHit candidate, ref float best, ref ImpactHit hit, ref bool found)
     {
         if (!ok || candidate.Time >= best)
             return;

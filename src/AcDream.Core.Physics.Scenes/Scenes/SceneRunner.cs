@@ -6,13 +6,6 @@ using AcDream.Core.Physics.Diagnostics;
 
 namespace AcDream.Core.Physics.Scenes;
 
-/// <summary>The diagnostics events of one frame of one mover, handed to a <see cref="SceneRunner"/> callback.</summary>
-/// <param name="MoverIndex">The mover's index in the scene.</param>
-/// <param name="MoverName">The mover's name.</param>
-/// <param name="Frame">The frame index (0-based).</param>
-/// <param name="Events">The frame's events, in order; valid only during the callback.</param>
-public readonly record struct FrameDiagnostics(int MoverIndex, string MoverName, int Frame, IReadOnlyList<TransitionEvent> Events);
-
 /// <summary>
 /// Runs a scene: every mover, alone, frame by frame through one <see cref="PhysicsEngine"/>, each frame
 /// requesting the mover's current position plus that frame's offset (same cell label and orientation),

@@ -7,60 +7,6 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 
-/// <summary>The first place where a replay disagrees with its recording.</summary>
-public sealed class ReplayDifference
-{
-    internal ReplayDifference(string mover, int frame, string field, string expected, string actual)
-    {
-        Mover = mover;
-        Frame = frame;
-        Field = field;
-        Expected = expected;
-        Actual = actual;
-    }
-
-    /// <summary>The mover's name; empty for a header difference.</summary>
-    public string Mover { get; }
-    /// <summary>The frame index (0-based); -1 when the difference is not in a frame (header, mover or frame counts).</summary>
-    public int Frame { get; }
-    /// <summary>The field, e.g. <c>position.y</c>, <c>cell</c>, <c>collided</c>.</summary>
-    public string Field { get; }
-    /// <summary>The recorded value.</summary>
-    public string Expected { get; }
-    /// <summary>The value the replay produced.</summary>
-    public string Actual { get; }
-
-    /// <inheritdoc />
-    public override string ToString()
-    {
-        string where = Frame >= 0 ? $"mover '{Mover}', frame {Frame}" : Mover.Length > 0 ? $"mover '{Mover}'" : "header";
-        return $"{where}, field {Field}: expected {Expected}, actual {Actual}";
-    }
-}
-
-/// <summary>The outcome of a replay.</summary>
-public sealed class ReplayResult
-{
-    internal ReplayResult(ReplayDifference? difference, int framesCompared, float tolerance, IReadOnlyList<string> notes)
-    {
-        FirstDifference = difference;
-        FramesCompared = framesCompared;
-        Tolerance = tolerance;
-        Notes = notes;
-    }
-
-    /// <summary>True when every frame matched.</summary>
-    public bool Matches => FirstDifference is null;
-    /// <summary>The first difference, or null.</summary>
-    public ReplayDifference? FirstDifference { get; }
-    /// <summary>How many frames were re-run and matched before the first difference (all of them on a match).</summary>
-    public int FramesCompared { get; }
-    /// <summary>The tolerance used for lengths.</summary>
-    public float Tolerance { get; }
-    /// <summary>Remarks that do not fail the replay (e.g. a different library version).</summary>
-    public IReadOnlyList<string> Notes { get; }
-}
-
 /// <summary>
 /// Re-runs a recorded trajectory: for every mover, from the scene's start state, each frame's recorded
 /// target is resolved again and the outputs are compared with the recording; the first difference is

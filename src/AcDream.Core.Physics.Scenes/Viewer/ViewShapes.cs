@@ -10,28 +10,6 @@ using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Viewer;
 
-/// <summary>What a <see cref="ViewShape"/> belongs to, as the viewer colours it.</summary>
-internal enum ViewSource : byte
-{
-    /// <summary>One of a land cell's two terrain triangles.</summary>
-    Terrain,
-    /// <summary>An indoor cell's physics BSP polygon (walls, floors, stairs).</summary>
-    EnvCell,
-    /// <summary>An indoor cell's portal polygon (not collided with; where the cell opens onto another).</summary>
-    Portal,
-    /// <summary>A building shell's polygon.</summary>
-    Building,
-    /// <summary>An object's collision shape.</summary>
-    Object,
-}
-
-/// <summary>
-/// One collision shape placed in the frame of one landblock: a polygon (<see cref="Vertices"/>, with its sidedness), or
-/// an object's cylinder (<see cref="Center"/> its low point) or sphere.
-/// </summary>
-internal sealed record ViewShape(ViewSource Source, OutlineForm Form, uint CellId, uint ObjectId, bool Collides,
-    PolygonSides Sides, Vector3[] Vertices, Vector3 Center, float Radius, float Height, uint OtherCellId = 0);
-
 /// <summary>
 /// Every shape of a world the viewer draws — terrain triangles, indoor cells' polygons and portals, building shells,
 /// objects' BSP polygons, cylinders and spheres — in the frame of one landblock. It reads the world's internals (the

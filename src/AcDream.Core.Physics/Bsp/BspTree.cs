@@ -6,58 +6,6 @@ using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Bsp;
 
-/// <summary>One node of a physics BSP tree, as given by a caller or a compiler (see <see cref="BspTree.Create"/>).</summary>
-public sealed class BspNodeData
-{
-    /// <summary>True for a leaf; false for an internal node with a split plane.</summary>
-    public bool IsLeaf { get; init; }
-    /// <summary>Internal nodes: the split plane (front = positive side). The normal is normalized on load.</summary>
-    public Plane SplitPlane { get; init; }
-    /// <summary>Internal nodes: the index of the front (positive) child, or -1 for none.</summary>
-    public int Front { get; init; } = -1;
-    /// <summary>Internal nodes: the index of the back (negative) child, or -1 for none.</summary>
-    public int Back { get; init; } = -1;
-    /// <summary>Leaves: the leaf is inside the solid.</summary>
-    public bool Solid { get; init; }
-    /// <summary>The polygons (indices into the tree's polygon list) stored at this node; physics trees keep them in leaves.</summary>
-    public IReadOnlyList<int> Polygons { get; init; } = Array.Empty<int>();
-    /// <summary>The node's bounding sphere; when null it is computed from the polygons below the node.</summary>
-    public Sphere? Bounds { get; init; }
-}
-
-/// <summary>A node of a <see cref="BspTree"/> in its flat, validated form.</summary>
-internal readonly struct BspNode
-{
-    /// <summary>Internal nodes: the unit split plane.</summary>
-    public readonly Plane SplitPlane;
-    /// <summary>The bounding sphere of everything below the node.</summary>
-    public readonly Sphere Bounds;
-    /// <summary>Front child index or -1.</summary>
-    public readonly int Front;
-    /// <summary>Back child index or -1.</summary>
-    public readonly int Back;
-    /// <summary>First entry of this node's polygons in <see cref="BspTree.PolygonIndices"/>.</summary>
-    public readonly int FirstPolygon;
-    /// <summary>How many polygons this node holds.</summary>
-    public readonly int PolygonCount;
-    /// <summary>True for a leaf.</summary>
-    public readonly bool IsLeaf;
-    /// <summary>Leaves: inside the solid.</summary>
-    public readonly bool Solid;
-
-    internal BspNode(Plane plane, Sphere bounds, int front, int back, int firstPolygon, int polygonCount, bool isLeaf, bool solid)
-    {
-        SplitPlane = plane;
-        Bounds = bounds;
-        Front = front;
-        Back = back;
-        FirstPolygon = firstPolygon;
-        PolygonCount = polygonCount;
-        IsLeaf = isLeaf;
-        Solid = solid;
-    }
-}
-
 /// <summary>
 /// A physics BSP tree (retail BSPTREE of a GfxObj or a cell) in a flat layout: nodes in one array, root
 /// at index 0, children by index, each node's polygons as a range of <see cref="PolygonIndices"/>.

@@ -5,20 +5,6 @@ using AcDream.Core.Physics.Validation;
 namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>
-/// How retail treats the back of a polygon (the DAT's SidesType / CullMode). A single-sided polygon
-/// collides only from its front; the others collide from both sides.
-/// </summary>
-public enum PolygonSides : byte
-{
-    /// <summary>Front face only (SidesType 0).</summary>
-    Single = 0,
-    /// <summary>Both faces, same surface (SidesType 1).</summary>
-    Double = 1,
-    /// <summary>Both faces, separate surfaces (SidesType 2).</summary>
-    Both = 2,
-}
-
-/// <summary>
 /// A convex physics polygon: its vertices (counter-clockwise seen from the front), its plane and its
 /// sidedness. Immutable after construction; the plane is computed the retail way (see <see cref="MakePlane"/>).
 /// Queries live in <see cref="PolygonQuery"/>.

@@ -3,19 +3,6 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics.Geometry;
 
-/// <summary>Which side of a plane something lies on (retail Sidedness).</summary>
-internal enum Sidedness
-{
-    /// <summary>In front of the plane (retail POSITIVE).</summary>
-    Positive = 0,
-    /// <summary>Behind the plane (retail NEGATIVE).</summary>
-    Negative = 1,
-    /// <summary>In the plane (retail IN_PLANE).</summary>
-    InPlane = 2,
-    /// <summary>Across the plane (retail CROSSING).</summary>
-    Crossing = 3,
-}
-
 /// <summary>
 /// The retail polygon queries (CPolygon): sphere hits, walkable hits, point in polygon, crossed edge,
 /// adjustments. All are allocation-free and work on the polygon's own (unscaled, local) space.

@@ -42,7 +42,6 @@ internal sealed class InterpolationManager
 
     public int Count => _count;
     public int NodeFailCounter => _nodeFailCounter;
-    public int FrameCounter => _frameCounter;
     public float OriginalDistance => _originalDistance;
     public bool KeepHeading => _keepHeading;
 

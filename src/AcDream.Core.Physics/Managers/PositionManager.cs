@@ -209,9 +209,7 @@ public sealed class PositionManager
 
     // ---- the body step's hooks ----
 
-    internal InterpolationManager? Interpolation => _interpolation;
     internal StickyManager? Sticky => _sticky;
-    internal ConstraintManager? Constraint => _constraint;
 
     /// <summary>PositionManager::adjust_offset: interpolation, then sticky, then the leash, on one offset.</summary>
     internal void AdjustOffset(ref Frame offset, float quantum, MoverDescription mover, in MoverState state)

@@ -39,29 +39,3 @@ public static class MotionCommand
     /// <summary>The NonCombat style (stance), the humanoid's default style.</summary>
     public const uint NonCombat = 0x8000003D;
 }
-
-/// <summary>The bits of a motion command id that say what kind of command it is (retail CommandMask).</summary>
-public static class MotionCommandMask
-{
-    /// <summary>A style (stance).</summary>
-    public const uint Style = 0x80000000;
-    /// <summary>A substate (a cycle).</summary>
-    public const uint Substate = 0x40000000;
-    /// <summary>A modifier (combined with the substate: turn, sidestep).</summary>
-    public const uint Modifier = 0x20000000;
-    /// <summary>An action (a one-shot motion).</summary>
-    public const uint Action = 0x10000000;
-    /// <summary>The command number without the kind bits.</summary>
-    public const uint Command = 0x00FFFFFF;
-}
-
-/// <summary>Which key is held with a motion command (retail HoldKey).</summary>
-public enum HoldKey
-{
-    /// <summary>Not given: the interpreter's current hold key applies.</summary>
-    Invalid = 0,
-    /// <summary>No key: walk.</summary>
-    None = 1,
-    /// <summary>The run key: walk forward becomes run, sidestep is sped up by the run rate, turns by 1.5.</summary>
-    Run = 2,
-}

@@ -4,18 +4,6 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics.Motion;
 
-/// <summary>Which of a <see cref="MotionData"/>'s physics vectors are present (the DAT's MotionData flags byte).</summary>
-[Flags]
-public enum MotionDataFlags : byte
-{
-    /// <summary>Neither vector.</summary>
-    None = 0,
-    /// <summary>The velocity is present (otherwise zero).</summary>
-    HasVelocity = 1,
-    /// <summary>The omega is present (otherwise zero).</summary>
-    HasOmega = 2,
-}
-
 /// <summary>
 /// What one motion plays (the DAT's MotionData): its animations in order, and the velocity and omega it adds
 /// to the sequence (body axes: x right, y forward, z up; omega in rad/s about the body axes), both multiplied

@@ -19,21 +19,11 @@ internal sealed class MotionInterpreter
     // The chat-emote bit of a command id (ACE CommandMasks.ChatEmote): DoMotion refuses such commands in a combat style.
     private const uint ChatEmoteMask = 0x02000000;
 
-    /// <summary>What the interpreter reads and writes of the physics object (CPhysicsObj).</summary>
-    internal struct BodyView
-    {
-        public bool Gravity;
-        public bool Contact;
-        public bool OnWalkable;
-        public Quaternion Orientation;
-        public Vector3 Velocity;
-    }
-
     private readonly MotionTableManager _manager;
     private readonly IMotionSkills? _skills;
     private readonly PendingQueue<(uint Motion, MotionError JumpError)> _pending = new();
 
-    public BodyView Body;
+    public InterpreterBody Body;
     public RawMotionState Raw = RawMotionState.Default;
     public InterpretedMotionState Interpreted = InterpretedMotionState.Default;
     public bool Initted;

@@ -21,7 +21,7 @@ internal sealed class MotionTableManager
         _sequence = sequence;
     }
 
-    public MotionState State { get; } = new();
+    public MotionTableState State { get; } = new();
 
     // The pending motions and the animation counter, for a snapshot (read, and replaced whole by a load).
     internal int PendingCount => _pending.Count;

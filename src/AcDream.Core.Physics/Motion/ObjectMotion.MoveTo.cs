@@ -1,5 +1,6 @@
 using System;
 using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Motion;
@@ -198,14 +199,14 @@ public sealed partial class ObjectMotion
         _moveTo.Cancel(ref view, MoveToError.ActionCancelled);
     }
 
-    private MoveToManager.BodyView Prepare(MoverDescription mover, in MoverState state, in BodyState body)
+    private MoveToBody Prepare(MoverDescription mover, in MoverState state, in BodyState body)
     {
         CheckBody(body);
         Load(mover, state, body);
         return View(mover, state);
     }
 
-    private MoveToManager.BodyView View(MoverDescription mover, in MoverState state) => new()
+    private MoveToBody View(MoverDescription mover, in MoverState state) => new()
     {
         Position = state.Position,
         Contact = state.Contact,

@@ -32,7 +32,7 @@ public sealed partial class ObjectMotion
         Table = table;
         _manager = new MotionTableManager(table, _sequence);
         _interp = new MotionInterpreter(_manager, skills);
-        _interp.Body = new MotionInterpreter.BodyView { Gravity = true, Orientation = Quaternion.Identity };
+        _interp.Body = new InterpreterBody { Gravity = true, Orientation = Quaternion.Identity };
         _interp.EnterDefaultState();
         PositionManager = new Managers.PositionManager(_interp, this);
     }
@@ -206,7 +206,7 @@ public sealed partial class ObjectMotion
 
     internal void Load(MoverDescription mover, in MoverState state, in BodyState body)
     {
-        _interp.Body = new MotionInterpreter.BodyView
+        _interp.Body = new InterpreterBody
         {
             Gravity = (mover.PhysicsState & PhysicsState.Gravity) != 0,
             Contact = state.Contact,

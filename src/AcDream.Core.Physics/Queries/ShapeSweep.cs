@@ -2,13 +2,12 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Reference;
 
 namespace AcDream.Core.Physics.Queries;
 
 /// <summary>
 /// The first contact of a swept sphere (radius 0 for a ray) with one placed shape, by the exact times of
-/// impact of <see cref="ReferenceToi"/>: faces are met only from their front (single-sided polygons), so a
+/// impact of <see cref="TimeOfImpact"/>: faces are met only from their front (single-sided polygons), so a
 /// cast that starts inside a closed solid passes out of it; a sphere already touching a shape hits it at
 /// fraction 0 only when it moves into it. Sphere and cylinder obstacles whose solid holds the cast's start
 /// are ignored for the same reason. Everything here is in the query's landblock frame unless named local.
@@ -66,7 +65,7 @@ internal static class ShapeSweep
         if (!Reaches(nodes[0].Bounds, lc, end, lr))
             return false;
         // How far from a polygon's box a kept contact's centre can lie: MayReach's reach and a little for rounding.
-        float grow = lr + ReferenceToi.ContactSlop + BoxSlack;
+        float grow = lr + TimeOfImpact.ContactSlop + BoxSlack;
         var sweptMin = Vector3.Min(lc, end) - new Vector3(grow);
         var sweptMax = Vector3.Max(lc, end) + new Vector3(grow);
         for (int i = 0; i < nodes.Length; i++)
@@ -79,7 +78,7 @@ internal static class ShapeSweep
                 var polygon = polygons[indices[node.FirstPolygon + k]];
                 if (!BoxesMeet(polygon, sweptMin, sweptMax) || !SegmentMeetsBox(polygon, lc, end, grow) || !MayReach(polygon, lc, end, lr))
                     continue;
-                if (!ReferenceToi.Polygon(lc, ld, lr, polygon, out var hit))
+                if (!TimeOfImpact.Polygon(lc, ld, lr, polygon, out var hit))
                     continue;
                 var normal = matrix.FrameToGlobal(hit.Normal);
                 if (walkableOnly && !(normal.Z >= PhysicsConstants.FloorZ))
@@ -100,7 +99,7 @@ internal static class ShapeSweep
     public static bool Polygon(Polygon polygon, Vector3 blockShift, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
     {
         var local = c - blockShift;
-        if (!MayReach(polygon, local, local + d * best.Fraction, r) || !ReferenceToi.Polygon(c, d, r, polygon, blockShift, out var hit))
+        if (!MayReach(polygon, local, local + d * best.Fraction, r) || !TimeOfImpact.Polygon(c, d, r, polygon, blockShift, out var hit))
             return false;
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
@@ -110,9 +109,9 @@ internal static class ShapeSweep
     /// <summary>Sweeps against a world-Z cylinder (query frame); ignored when the start lies inside it.</summary>
     public static bool Cylinder(in CylSphere cylinder, Vector3 c, Vector3 d, float r, bool walkableOnly, ref Best best)
     {
-        if (Vector3.DistanceSquared(ReferenceToi.ClosestPointOnCylinder(c, cylinder), c) == 0f)
+        if (Vector3.DistanceSquared(TimeOfImpact.ClosestPointOnCylinder(c, cylinder), c) == 0f)
             return false;
-        if (!ReferenceToi.Cylinder(c, d, r, cylinder, out var hit))
+        if (!TimeOfImpact.Cylinder(c, d, r, cylinder, out var hit))
             return false;
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
@@ -124,7 +123,7 @@ internal static class ShapeSweep
     {
         if (Vector3.DistanceSquared(sphere.Center, c) < sphere.Radius * sphere.Radius)
             return false;
-        if (!ReferenceToi.Sphere(c, d, r, sphere, out var hit))
+        if (!TimeOfImpact.Sphere(c, d, r, sphere, out var hit))
             return false;
         if (walkableOnly && !(hit.Normal.Z >= PhysicsConstants.FloorZ))
             return false;
@@ -147,7 +146,7 @@ internal static class ShapeSweep
     /// <paramref name="b"/> (the start and the best contact so far) misses the polygon's box widened by
     /// <paramref name="grow"/> (radius + contact slop + slack). An accepted contact has its centre on that
     /// segment within radius + slop of the polygon, so inside the widened box: every contact
-    /// <see cref="ReferenceToi.Polygon(Vector3, Vector3, float, Polygon, out Reference.ReferenceHit)"/> could report that <see cref="Best.Offer"/> would keep passes; the
+    /// <see cref="TimeOfImpact.Polygon(Vector3, Vector3, float, Polygon, out Geometry.ImpactHit)"/> could report that <see cref="Best.Offer"/> would keep passes; the
     /// rest would cost the exact test's closest point, face, edges and vertices for nothing. A slab test
     /// (a diagonal cast's own box holds far more polygons than the cast comes near), with the entry and exit
     /// fractions compared with a margin far above their rounding.
@@ -178,7 +177,7 @@ internal static class ShapeSweep
     /// <summary>
     /// A cheap test before the exact one: false when the swept sphere stays clear of the polygon's plane
     /// (wholly in front of it, or wholly behind it), or stays behind a single-sided face — the cases in
-    /// which <see cref="ReferenceToi.Polygon(Vector3, Vector3, float, Geometry.Polygon, out ReferenceHit)"/> finds nothing.
+    /// which <see cref="TimeOfImpact.Polygon(Vector3, Vector3, float, Geometry.Polygon, out ImpactHit)"/> finds nothing.
     /// </summary>
     private static bool MayReach(Polygon polygon, Vector3 a, Vector3 b, float r)
     {
@@ -187,14 +186,14 @@ internal static class ShapeSweep
         float s1 = Vector3.Dot(plane.Normal, b) + plane.D;
         if (s0 < 0f && s1 <= 0f && polygon.Sides == PolygonSides.Single)
             return false;
-        float reach = r + ReferenceToi.ContactSlop;
+        float reach = r + TimeOfImpact.ContactSlop;
         return !(s0 > reach && s1 > reach) && !(s0 < -reach && s1 < -reach);
     }
 
     /// <summary>True when a sphere of radius <paramref name="r"/> moving from <paramref name="a"/> to <paramref name="b"/> can touch <paramref name="bounds"/>.</summary>
     public static bool Reaches(in Sphere bounds, Vector3 a, Vector3 b, float r)
     {
-        var closest = ReferenceToi.ClosestPointOnSegment(bounds.Center, a, b);
+        var closest = TimeOfImpact.ClosestPointOnSegment(bounds.Center, a, b);
         float reach = bounds.Radius + r + PhysicsConstants.Epsilon;
         return Vector3.DistanceSquared(closest, bounds.Center) <= reach * reach;
     }

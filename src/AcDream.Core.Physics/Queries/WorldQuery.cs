@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Reference;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
@@ -410,7 +409,7 @@ public sealed class WorldQuery
             case ShadowShapeKind.Cylinder:
                 var cyl = shape.Cylinder;
                 cyl.LowPoint = row.PlacedPoint + shift; // the registry's Position::localtoglobal, same bits
-                return Vector3.DistanceSquared(ReferenceToi.ClosestPointOnCylinder(c, cyl), c) <= r * r;
+                return Vector3.DistanceSquared(TimeOfImpact.ClosestPointOnCylinder(c, cyl), c) <= r * r;
             default:
                 float reach = bounds.Radius + r;
                 return Vector3.DistanceSquared(bounds.Center, c) <= reach * reach;

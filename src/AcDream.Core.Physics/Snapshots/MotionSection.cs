@@ -105,7 +105,7 @@ internal static class MotionSection
             throw r.Fail("motion.table", $"0x{tableId:X8} is not the target's table 0x{table.Id:X8}");
 
         byte bodyFlags = Flags(ref r, "motion.body.flags", 7);
-        var body = new MotionInterpreter.BodyView
+        var body = new InterpreterBody
         {
             Gravity = (bodyFlags & 1) != 0,
             Contact = (bodyFlags & 2) != 0,

@@ -187,7 +187,7 @@ internal static class ViewerClearance
             if (!node.IsLeaf || node.PolygonCount == 0)
                 continue;
             var end = la + d * MathF.Min(limit, 1f);
-            var closest = Reference.ReferenceToi.ClosestPointOnSegment(node.Bounds.Center, la, end);
+            var closest = Geometry.TimeOfImpact.ClosestPointOnSegment(node.Bounds.Center, la, end);
             float far = node.Bounds.Radius + reach;
             if (Vector3.DistanceSquared(closest, node.Bounds.Center) > far * far)
                 continue;

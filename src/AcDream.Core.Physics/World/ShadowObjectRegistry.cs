@@ -414,13 +414,6 @@ public sealed class ShadowObjectRegistry
                 && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
                 && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z;
         }
-
-        /// <summary>The <paramref name="index"/>-th object's reach box (this cell's landblock space).</summary>
-        public void ReachBoxOf(int index, out Vector3 min, out Vector3 max)
-        {
-            var slot = _slots![index];
-            (min, max) = (slot.ReachMin, slot.ReachMax);
-        }
     }
 
     /// <summary>The cells an object is listed in.</summary>

@@ -42,6 +42,9 @@ public class SharedManagerParityTests
         Assert.StartsWith("moveto-blocked.json.gz: ok", line);
         Assert.Contains("under departure progress-clock", line);
         Assert.Contains("ours from frame 89, ACE's from frame 92", line);
+        // The tool's short line keeps the verdict, the departure's name and the counts; the detail is the -v line's.
+        Assert.Equal("moveto-blocked.json.gz: ok (within 1e-4 m, headings within 1e-3 deg) under departure progress-clock; 1 run, 210 frames, 210 within, 210 bit-identical, max 0 m, 0 flag mismatches (more with -v)",
+            report.Summary());
         Assert.Equal(210, report.Frames);
         Assert.Equal(report.Frames, report.BitIdentical);
         Assert.Equal(0, report.FlagMismatches);

@@ -243,6 +243,18 @@ public sealed class ParityCheckTests : IDisposable
     }
 
     [Fact]
+    public void Tool_Parity_PrintsOneShortLinePerFile_AndEveryDetailWithV()
+    {
+        Write("door.json.gz", AceFile(AceFrames));
+        var (code, output, _) = Tool("parity", _dir);
+        Assert.Equal(0, code);
+        Assert.Equal("door.json.gz: ok (bit-identical); 1 run, 4 frames, 4 within, 4 bit-identical, max 0 m, 0 flag mismatches", output.TrimEnd());
+        (code, output, _) = Tool("parity", _dir, "-v");
+        Assert.Equal(0, code);
+        Assert.Equal("door.json.gz: ok (bit-identical) 1 run, 4 frames, 100.00 % within 1e-4 m, 4 bit-identical, max difference 0 m, 0 flag mismatches", output.TrimEnd());
+    }
+
+    [Fact]
     public void Tool_ExitCodes_ZeroOneAndTwo()
     {
         Write("door.json.gz", AceFile(AceFrames));

@@ -28,6 +28,22 @@ public class ToolTests
     }
 
     [Fact]
+    public void List_StartsEveryDescriptionInOneColumn_PastTheLongestName()
+    {
+        var (_, output, _) = Run("list");
+        int longest = 0;
+        foreach (string name in SceneLibrary.Names)
+            longest = Math.Max(longest, name.Length);
+        var lines = output.TrimEnd().Split('\n');
+        Assert.Equal(SceneLibrary.Names.Count, lines.Length);
+        foreach (string line in lines)
+        {
+            string name = line[..line.IndexOf(' ')];
+            Assert.Equal(SceneLibrary.Load(name).Description, line[(longest + 2)..].TrimEnd('\r'));
+        }
+    }
+
+    [Fact]
     public void Run_PrintsATableAndASummary()
     {
         var (code, output, err) = Run("run", "boulder");
