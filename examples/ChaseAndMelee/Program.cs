@@ -59,7 +59,7 @@ var chase = MoveToParameters.Default with
     Flags = MoveToFlags.RetailDefault | MoveToFlags.Sticky,
     // Walk or run is decided when the move starts: it runs when farther than this beyond the 0.6 m. Retail's
     // default is 15 m, so a creature sent after a player 10 m off walks (3 m/s) and never catches a runner; a server
-    // that wants its monsters to run the last stretch says so (ACE's servers use 1 m).
+    // that wants its monsters to run the last stretch says so (ACE's MovementParameters default to 1 m).
     WalkRunThreshold = 1f,
 };
 const float meleeReach = 1f;                                          // gap between the cylinders a swing reaches
