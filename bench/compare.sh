@@ -23,7 +23,7 @@
 # (DOTNET_TieredCompilation=0) so the count is repeatable; it is a proxy for the tiered, profile-guided
 # code that the wall-clock runs measure. A rough one: under valgrind the JIT compiles about half the
 # methods, hot ones included, a second time with MinOpts (no inlining: they call Vector3's operators and
-# span indexers; see docs/performance.md, "The face slide, this round"), so the counts overstate call
+# span indexers; see docs/performance-history.md, "The face slide, this round"), so the counts overstate call
 # overhead and understate what inlining saves; the wall-clock ratios decide. Default workloads: head-on
 # and slide-ne. A workload named crowd-N counts the crowd's ticks instead (N creatures piling onto one
 # player, the driver's `crowd-count N 270 30`: ticks 271-300, while the pile forms), per tick.
