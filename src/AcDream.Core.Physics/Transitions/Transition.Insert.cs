@@ -247,7 +247,8 @@ internal sealed partial class Transition
     /// </summary>
     internal TransitionState FindCollisions(Cell cell)
     {
-        var state = CellCollisions.FindEnvCollisions(cell, this);
+        // The cell kinds are two sealed classes: testing the kind here calls the cell's own routine directly.
+        var state = cell is LandCell land ? CellCollisions.FindEnvCollisions(land, this) : CellCollisions.FindEnvCollisions((EnvCell)cell, this);
         if (state != TransitionState.OK)
             return state;
         if (cell is LandCell { Building: { } building })

@@ -10,7 +10,10 @@ namespace AcDream.Core.Physics.Transitions.Responses;
 /// </summary>
 internal static class CellCollisions
 {
-    /// <summary>Collides the transition's check spheres with the cell's geometry (retail find_env_collisions).</summary>
+    /// <summary>
+    /// Collides the transition's check spheres with the cell's geometry (retail find_env_collisions, virtual
+    /// there): the land or env cell routine below.
+    /// </summary>
     public static TransitionState FindEnvCollisions(Cell cell, Transition transition) => cell switch
     {
         LandCell land => FindEnvCollisions(land, transition),
