@@ -32,7 +32,7 @@ public sealed partial class PhysicsEngine
     /// <param name="desiredVelocity">
     /// The motion the client's input asks for, world axes, m/s (retail's animation root motion): it moves the
     /// body only while it stands on walkable ground, and becomes its velocity when it leaves the ground (for a
-    /// body with a <see cref="BodyState.MotionInterpreter"/>).
+    /// body with a <see cref="BodyState.HasMotionInterpreter"/>).
     /// </param>
     /// <param name="jumpVelocity">
     /// 0 for no jump, else the jump's vertical speed, m/s (retail get_jump_v_z): taken when the body has a
@@ -57,7 +57,7 @@ public sealed partial class PhysicsEngine
         // CMotionInterp::jump: allowed from walkable ground (or without gravity); set_on_walkable(0) then calls
         // LeaveGround, which sets the leave-ground velocity, only when the body was on walkable ground.
         bool jumped = false;
-        if (jumpVelocity > 0f && b.MotionInterpreter && (!gravity || (s.Contact && s.OnWalkable)))
+        if (jumpVelocity > 0f && b.HasMotionInterpreter && (!gravity || (s.Contact && s.OnWalkable)))
         {
             jumped = true;
             if (s.OnWalkable && gravity)
@@ -265,7 +265,7 @@ public sealed partial class PhysicsEngine
             v = Vector3.Zero; // OBJECTINFO::kill_velocity, called inside the transition
         if (motion is not null)
             v = motion.SetOnWalkable(next.OnWalkable, next.Position.Frame.Orientation, next.Contact, v); // set_on_walkable: LeaveGround / HitGround
-        else if (prevOnWalkable && !next.OnWalkable && b.MotionInterpreter && (ps & PhysicsState.Gravity) != 0)
+        else if (prevOnWalkable && !next.OnWalkable && b.HasMotionInterpreter && (ps & PhysicsState.Gravity) != 0)
             v = BodyMotion.LeaveGroundVelocity(v, desiredVelocity, 0f); // MovementManager::LeaveGround
         b.Acceleration = BodyMotion.Acceleration(ps, next.Contact, next.OnWalkable);
         if (BodyMotion.StopsSpin(ps, next.Contact, next.OnWalkable))
