@@ -126,6 +126,8 @@ public sealed partial class PhysicsEngine
         _acceptedTransitions = 0;
         var last = new QuantumOutcome();
         int quanta = 0;
+        var start = s.Position;
+        double stepped = 0; // the quanta's seconds
         if ((ps & PhysicsState.Frozen) != 0)
         {
             b.PendingTime = 0;
@@ -146,6 +148,7 @@ public sealed partial class PhysicsEngine
         if (pending <= PhysicsConstants.MaxQuantum)
         {
             Quantum(mover, ref s, ref b, (float)pending, mode, ref last);
+            stepped = (float)pending;
             quanta = 1;
             pending = 0;
         }
@@ -154,6 +157,7 @@ public sealed partial class PhysicsEngine
             do
             {
                 Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, mode, ref last);
+                stepped += (float)PhysicsConstants.MaxQuantum;
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
             }
@@ -161,6 +165,7 @@ public sealed partial class PhysicsEngine
             if (pending > PhysicsConstants.MinQuantum)
             {
                 Quantum(mover, ref s, ref b, (float)pending, mode, ref last);
+                stepped += (float)pending;
                 quanta++;
                 pending = 0;
             }
@@ -168,7 +173,12 @@ public sealed partial class PhysicsEngine
         b.PendingTime = pending;
         var move = new MoveResult(!last.Refused, s, last.Refused ? TransitionState.Collided : TransitionState.OK, last.CollisionNormalValid,
             last.CollisionNormal, last.Environment, _stepCollided.Items, last.LastCollided, last.VelocityKilled);
-        return new BodyStepResult(move, b, quanta, jumped) { Transitions = _acceptedTransitions };
+        return new BodyStepResult(move, b, quanta, jumped)
+        {
+            Transitions = _acceptedTransitions,
+            Displacement = start.GetOffset(s.Position),
+            SteppedTime = stepped,
+        };
     }
 
     private static BodyStepResult Unmoved(in MoverState s, in BodyState b, bool jumped) =>
