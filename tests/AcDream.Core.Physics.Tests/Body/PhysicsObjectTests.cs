@@ -121,6 +121,20 @@ public class PhysicsObjectTests
     }
 
     [Fact]
+    public void ALongFrame_SteppedInSeveralQuanta_ReportsTheirTimeAndSpeed()
+    {
+        // 0.5 s in one call: quanta of 0.2, 0.2 and 0.1 s (CPhysicsObj::update_object's MaxQuantum), 4 m/s on flat ground.
+        var engine = new PhysicsEngine(TestGeometry.FlatWorld());
+        var obj = new PhysicsObject(MoverDescription.Player(), MoverState.OnFloor(TestGeometry.At(100, 40, 0), 0f), BodyState.Creature());
+        engine.Step(obj, 1.0 / 30, Vector3.Zero); // settles onto the floor
+        var step = engine.Step(obj, 0.5, new Vector3(0f, 4f, 0f));
+        Assert.Equal(3, step.Quanta);
+        Assert.Equal(0.5, step.SteppedTime, 6);
+        Assert.Equal(2f, step.Displacement.Y, 4);
+        Assert.Equal(4f, step.Speed, 3);
+    }
+
+    [Fact]
     public void ARunningPlayer_HasZeroVelocity_AndSpeedTheRunSpeed()
     {
         // Run 200: RunForward at 4 m/s × 2.375 = 9.5 m/s, moved by the motion table's root motion, not the velocity.
