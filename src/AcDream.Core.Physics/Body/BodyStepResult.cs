@@ -71,7 +71,9 @@ public readonly struct BodyStepResult
     /// <summary>
     /// The body's speed over this step, m/s: the length of <see cref="Displacement"/> over <see cref="SteppedTime"/>,
     /// 0 when no quantum ran (a renderer at a higher rate than the physics' 30 Hz sees it in the frames with
-    /// <see cref="Quanta"/> above 0). A player running at run skill 200 reads about 9.5 m/s.
+    /// <see cref="Quanta"/> above 0). A body moved by its motion table moves by whole animation frames, so one quantum's
+    /// speed jumps around the run's: at run skill 200 (9.5 m/s, 0.1333 m a frame) a 1/30 s quantum crosses 2 or 3
+    /// frames, 8 or 12 m/s; summed over a second the displacements give 9.47 m/s (docs/motion-example.md).
     /// </summary>
     public float Speed => SteppedTime > 0 ? (float)(Displacement.Length() / SteppedTime) : 0f;
 

@@ -153,6 +153,9 @@ public class PhysicsObjectTests
         {
             var step = engine.Step(obj, 1.0 / 30);
             Assert.Equal(Vector3.Zero, obj.Body.Velocity);
+            // Each 1/30 s quantum crosses 2.375 animation frames: 2 or 3 whole frames of 9.5 / 71.25 m.
+            float frames = step.Displacement.Length() / (9.5f / 71.25f);
+            Assert.True(MathF.Abs(frames - 2f) < 1e-3f || MathF.Abs(frames - 3f) < 1e-3f, $"a quantum moved {frames} animation frames");
             distance += step.Displacement;
             seconds += step.SteppedTime;
         }
