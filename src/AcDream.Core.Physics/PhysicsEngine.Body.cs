@@ -32,7 +32,7 @@ public sealed partial class PhysicsEngine
     /// <param name="desiredVelocity">
     /// The motion the client's input asks for, world axes, m/s (retail's animation root motion): it moves the
     /// body only while it stands on walkable ground, and becomes its velocity when it leaves the ground (for a
-    /// body with a <see cref="BodyState.MotionInterpreter"/>).
+    /// body with a <see cref="BodyState.HasMotionInterpreter"/>).
     /// </param>
     /// <param name="jumpVelocity">
     /// 0 for no jump, else the jump's vertical speed, m/s (retail get_jump_v_z): taken when the body has a
@@ -44,20 +44,32 @@ public sealed partial class PhysicsEngine
         float jumpVelocity = 0f)
     {
         ArgumentNullException.ThrowIfNull(mover);
+        bool jumped = BeginVelocityStep(mover, state, body, elapsed, desiredVelocity, jumpVelocity, out var s, out var b);
+        return Advance(mover, s, b, elapsed, jumped, new VelocityMode(desiredVelocity));
+    }
+
+    /// <summary>
+    /// The checks and the jump before a step without a motion layer (a desired velocity or a missile): the state
+    /// and body to step, with the acceleration of their contact; true when the jump was taken. Throws before
+    /// anything is changed.
+    /// </summary>
+    private bool BeginVelocityStep(MoverDescription mover, in MoverState state, in BodyState body, double elapsed, Vector3 desiredVelocity,
+        float jumpVelocity, out MoverState s, out BodyState b)
+    {
         var begin = state.Position;
         Guard.Pose(ref begin.Frame, "state.position");
         ValidateState(mover, state, begin, begin.CellId);
         BodyGuard.Check(body, elapsed, desiredVelocity, jumpVelocity);
 
-        var s = state;
-        var b = body;
+        s = state;
+        b = body;
         var ps = mover.PhysicsState;
         bool gravity = (ps & PhysicsState.Gravity) != 0;
 
         // CMotionInterp::jump: allowed from walkable ground (or without gravity); set_on_walkable(0) then calls
         // LeaveGround, which sets the leave-ground velocity, only when the body was on walkable ground.
         bool jumped = false;
-        if (jumpVelocity > 0f && b.MotionInterpreter && (!gravity || (s.Contact && s.OnWalkable)))
+        if (jumpVelocity > 0f && b.HasMotionInterpreter && (!gravity || (s.Contact && s.OnWalkable)))
         {
             jumped = true;
             if (s.OnWalkable && gravity)
@@ -66,7 +78,7 @@ public sealed partial class PhysicsEngine
         }
         // Retail recomputes the acceleration whenever the contact state or the Gravity state changes.
         b.Acceleration = BodyMotion.Acceleration(ps, s.Contact, s.OnWalkable);
-        return Advance(mover, s, b, elapsed, desiredVelocity, null, jumped);
+        return jumped;
     }
 
     /// <summary>
@@ -99,18 +111,23 @@ public sealed partial class PhysicsEngine
         var b = body;
         b.Acceleration = BodyMotion.Acceleration(mover.PhysicsState, s.Contact, s.OnWalkable);
         motion.Load(mover, s, b);
-        return Advance(mover, s, b, elapsed, Vector3.Zero, motion, false);
+        return Advance(mover, s, b, elapsed, false, new MotionMode(motion));
     }
 
-    // CPhysicsObj::update_object's quantum loop, shared by both steps.
-    private BodyStepResult Advance(MoverDescription mover, MoverState s, BodyState b, double elapsed, Vector3 desiredVelocity,
-        Motion.ObjectMotion? motion, bool jumped)
+    /// <summary>
+    /// CPhysicsObj::update_object's quantum loop, the one every body step runs; <paramref name="mode"/> is what differs
+    /// between the kinds of body (<see cref="IQuantumMode"/>).
+    /// </summary>
+    private BodyStepResult Advance<TMode>(MoverDescription mover, MoverState s, BodyState b, double elapsed, bool jumped, in TMode mode)
+        where TMode : struct, IQuantumMode
     {
         var ps = mover.PhysicsState;
         _stepCollided.Clear();
         _acceptedTransitions = 0;
         var last = new QuantumOutcome();
         int quanta = 0;
+        var start = s.Position;
+        double stepped = 0; // the quanta's seconds
         if ((ps & PhysicsState.Frozen) != 0)
         {
             b.PendingTime = 0;
@@ -130,7 +147,8 @@ public sealed partial class PhysicsEngine
         }
         if (pending <= PhysicsConstants.MaxQuantum)
         {
-            Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, motion, ref last);
+            Quantum(mover, ref s, ref b, (float)pending, mode, ref last);
+            stepped = (float)pending;
             quanta = 1;
             pending = 0;
         }
@@ -138,14 +156,16 @@ public sealed partial class PhysicsEngine
         {
             do
             {
-                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, desiredVelocity, motion, ref last);
+                Quantum(mover, ref s, ref b, (float)PhysicsConstants.MaxQuantum, mode, ref last);
+                stepped += (float)PhysicsConstants.MaxQuantum;
                 quanta++;
                 pending -= PhysicsConstants.MaxQuantum;
             }
             while (pending > PhysicsConstants.MaxQuantum);
             if (pending > PhysicsConstants.MinQuantum)
             {
-                Quantum(mover, ref s, ref b, (float)pending, desiredVelocity, motion, ref last);
+                Quantum(mover, ref s, ref b, (float)pending, mode, ref last);
+                stepped += (float)pending;
                 quanta++;
                 pending = 0;
             }
@@ -153,7 +173,12 @@ public sealed partial class PhysicsEngine
         b.PendingTime = pending;
         var move = new MoveResult(!last.Refused, s, last.Refused ? TransitionState.Collided : TransitionState.OK, last.CollisionNormalValid,
             last.CollisionNormal, last.Environment, _stepCollided.Items, last.LastCollided, last.VelocityKilled);
-        return new BodyStepResult(move, b, quanta, jumped) { Transitions = _acceptedTransitions };
+        return new BodyStepResult(move, b, quanta, jumped)
+        {
+            Transitions = _acceptedTransitions,
+            Displacement = start.GetOffset(s.Position),
+            SteppedTime = stepped,
+        };
     }
 
     private static BodyStepResult Unmoved(in MoverState s, in BodyState b, bool jumped) =>
@@ -168,26 +193,18 @@ public sealed partial class PhysicsEngine
     }
 
     /// <summary>One quantum: retail UpdateObjectInternal → UpdatePositionInternal → transition → SetPositionInternal.</summary>
-    private void Quantum(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
-        Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
+    private void Quantum<TMode>(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, in TMode mode, ref QuantumOutcome outcome)
+        where TMode : struct, IQuantumMode
     {
         b.QuantumStart = s.Position; // the pose a renderer blends from (SmoothFrames)
         bool prevOnWalkable = s.OnWalkable;
         int accepted = _acceptedTransitions;
-        QuantumCore(QuantumMover(mover), ref s, ref b, quantum, desiredVelocity, motion, ref outcome);
-        // After SetPositionInternal: MovementManager::UseTime → MoveToManager::UseTime (Motion/ObjectMotion.MoveTo.cs).
-        motion?.UseMoveTo(mover, ref s, b, quantum);
-        // UpdateObjectInternal's tail: CPartArray::HandleMovement completes the motions that needed no animation.
-        motion?.HandleMovement();
-        // PositionManager::UseTime: the sticky timeout, and the interpolation's blip (SetPositionSimple).
-        if (motion is not null && motion.PositionManager.UseTime(quantum, out var blipTarget))
-            Blip(mover, ref s, ref b, blipTarget, motion.PositionManager);
-        if (_missile is not null)
-            AfterMissileQuantum(_acceptedTransitions != accepted, prevOnWalkable, s);
+        QuantumCore(mode.QuantumMover(mover), ref s, ref b, quantum, mode, ref outcome);
+        mode.AfterQuantum(this, mover, ref s, ref b, quantum, _acceptedTransitions != accepted, prevOnWalkable);
     }
 
-    private void QuantumCore(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, Vector3 desiredVelocity,
-        Motion.ObjectMotion? motion, ref QuantumOutcome outcome)
+    private void QuantumCore<TMode>(MoverDescription mover, ref MoverState s, ref BodyState b, float quantum, in TMode mode,
+        ref QuantumOutcome outcome) where TMode : struct, IQuantumMode
     {
         var ps = mover.PhysicsState;
         var begin = s.Position;
@@ -195,27 +212,7 @@ public sealed partial class PhysicsEngine
         if ((ps & PhysicsState.Hidden) == 0)
         {
             var velocity = b.Velocity;
-            if (motion is not null)
-            {
-                // UpdatePositionInternal (CPhysicsObj.c:4431): the sequence's offset (body axes), its origin scaled by the
-                // object's scale on walkable ground and by 0 off it (the turn is kept), combined onto the position; then
-                // the physics displacement (UpdatePhysicsInternal) and the physics omega, in world axes.
-                var offset = Frame.Identity;
-                motion.Advance(quantum, ref offset);
-                float scale = s.OnWalkable ? mover.Scale : 0f;
-                offset.Origin = new Vector3((float)(offset.Origin.X * (double)scale), (float)(offset.Origin.Y * (double)scale),
-                    (float)(offset.Origin.Z * (double)scale));
-                motion.PositionManager.AdjustOffset(ref offset, quantum, mover, s); // interpolation, sticky, leash
-                frame = begin.Frame.Combine(offset);
-                BodyMotion.IntegrateInto(ref frame.Origin, ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
-            }
-            else
-            {
-                // UpdatePositionInternal: the animation's root motion counts only on walkable ground (scaled by 0 off it).
-                var offset = s.OnWalkable ? desiredVelocity * quantum : Vector3.Zero;
-                offset += BodyMotion.Integrate(ref velocity, b.Acceleration, quantum, s, ps, b.Friction);
-                frame.Origin += offset;
-            }
+            mode.Move(mover, s, b, quantum, ref frame, ref velocity);
             b.Velocity = velocity;
             frame.Orientation = BodyMotion.Rotate(frame.Orientation, b.Omega * quantum);
         }
@@ -263,10 +260,7 @@ public sealed partial class PhysicsEngine
         var v = b.Velocity;
         if (result.VelocityKilled)
             v = Vector3.Zero; // OBJECTINFO::kill_velocity, called inside the transition
-        if (motion is not null)
-            v = motion.SetOnWalkable(next.OnWalkable, next.Position.Frame.Orientation, next.Contact, v); // set_on_walkable: LeaveGround / HitGround
-        else if (prevOnWalkable && !next.OnWalkable && b.MotionInterpreter && (ps & PhysicsState.Gravity) != 0)
-            v = BodyMotion.LeaveGroundVelocity(v, desiredVelocity, 0f); // MovementManager::LeaveGround
+        v = mode.OnWalkable(mover, b, prevOnWalkable, next, v); // set_on_walkable: LeaveGround / HitGround
         b.Acceleration = BodyMotion.Acceleration(ps, next.Contact, next.OnWalkable);
         if (BodyMotion.StopsSpin(ps, next.Contact, next.OnWalkable))
             b.Omega = Vector3.Zero;

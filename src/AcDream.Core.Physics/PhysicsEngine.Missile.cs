@@ -6,9 +6,6 @@ namespace AcDream.Core.Physics;
 
 public sealed partial class PhysicsEngine
 {
-    // The missile being stepped (Step(Missile, double)), read by each quantum; null otherwise.
-    private Missile? _missile;
-
     /// <summary>
     /// Advances a missile by <paramref name="elapsed"/> seconds the retail way: the body step of
     /// <see cref="Step(MoverDescription, in MoverState, in BodyState, double, Vector3, float)"/> (quanta of 1/30 to
@@ -25,30 +22,11 @@ public sealed partial class PhysicsEngine
     {
         ArgumentNullException.ThrowIfNull(missile);
         bool inFlight = missile.InFlight;
-        _missile = missile;
-        BodyStepResult step;
-        try
-        {
-            step = Step(missile.Description, missile.State, missile.Body, elapsed, Vector3.Zero);
-        }
-        finally
-        {
-            _missile = null;
-        }
+        var mover = missile.Description;
+        BeginVelocityStep(mover, missile.State, missile.Body, elapsed, Vector3.Zero, 0f, out var s, out var b);
+        var step = Advance(mover, s, b, elapsed, false, new MissileMode(missile));
         missile.State = step.Next;
         missile.Body = step.Body;
         return new MissileStepResult(step, inFlight ? missile.Hit : default);
-    }
-
-    /// <summary>The quantum's mover: a missile's current description (it loses its flight states at the hit).</summary>
-    private MoverDescription QuantumMover(MoverDescription mover) => _missile?.Description ?? mover;
-
-    /// <summary>After a quantum: a missile counts it and, when its transition was accepted, reports what it hit (handle_all_collisions).</summary>
-    private void AfterMissileQuantum(bool transitionAccepted, bool prevOnWalkable, in MoverState next)
-    {
-        var missile = _missile!;
-        missile.CountQuantum();
-        if (transitionAccepted)
-            missile.AfterTransition(_transition.CollisionInfo, _transition.World.Objects, prevOnWalkable, next);
     }
 }

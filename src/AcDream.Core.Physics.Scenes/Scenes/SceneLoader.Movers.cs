@@ -132,7 +132,7 @@ public static partial class SceneLoader
             body.Omega = o.Opt("omega") is { } w ? Speed(w, o.Child("omega")) : Vector3.Zero;
             body.Friction = Fraction(o, "friction", PhysicsConstants.DefaultFriction);
             body.Elasticity = Fraction(o, "elasticity", PhysicsConstants.DefaultElasticity);
-            body.MotionInterpreter = o.Bool("motionInterpreter", true);
+            body.HasMotionInterpreter = o.Bool("motionInterpreter", true);
             o.End();
             return body;
         }

@@ -34,12 +34,14 @@ public struct BodyState
     public float Elasticity;
 
     /// <summary>
-    /// The body has retail's motion interpreter (CMotionInterp: players and creatures): a jump is allowed
-    /// only from walkable ground (jump_is_allowed), and leaving walkable ground sets the velocity to the
-    /// desired motion with the jump's vertical speed (CMotionInterp::LeaveGround). Objects without one
-    /// (missiles, thrown items) keep their velocity.
+    /// Whether the body has a motion interpreter (retail: its movement manager's motion_interpreter is not null,
+    /// the test MovementManager::LeaveGround makes, acclient.c:339384; players and creatures have one): a jump
+    /// is allowed only from walkable ground (jump_is_allowed), and leaving walkable ground sets the velocity to
+    /// the desired motion with the jump's vertical speed (CMotionInterp::LeaveGround). Objects without one
+    /// (missiles, thrown items) keep their velocity. A flag only: the interpreter itself belongs to
+    /// <see cref="Motion.ObjectMotion"/>.
     /// </summary>
-    public bool MotionInterpreter;
+    public bool HasMotionInterpreter;
 
     /// <summary>
     /// The acceleration of the body's next quantum, m/s² (retail m_accelerationVector): gravity for a body
@@ -77,7 +79,7 @@ public struct BodyState
     {
         Friction = PhysicsConstants.DefaultFriction,
         Elasticity = PhysicsConstants.DefaultElasticity,
-        MotionInterpreter = true,
+        HasMotionInterpreter = true,
     };
 
     /// <summary>An object without a motion interpreter (a missile, a thrown item) moving at <paramref name="velocity"/>, with retail's default friction and elasticity.</summary>

@@ -63,7 +63,7 @@ public sealed class Missile
 
     /// <summary>
     /// A missile launched with a whole <see cref="BodyState"/>: its velocity, spin (a spinning projectile), friction
-    /// and elasticity. A missile has no motion interpreter (<see cref="BodyState.MotionInterpreter"/> is cleared).
+    /// and elasticity. A missile has no motion interpreter (<see cref="BodyState.HasMotionInterpreter"/> is cleared).
     /// </summary>
     /// <param name="description">What the missile is; its <see cref="MoverDescription.PhysicsState"/> must include Missile.</param>
     /// <param name="start">The launch position (cell and landblock-local frame); checked against the world at the first step.</param>
@@ -85,7 +85,7 @@ public sealed class Missile
         _flight = description;
         _spent = description.With(physicsState: description.PhysicsState & ~FlightBits);
         State = MoverState.Airborne(start);
-        body.MotionInterpreter = false;
+        body.HasMotionInterpreter = false;
         Body = body;
     }
 

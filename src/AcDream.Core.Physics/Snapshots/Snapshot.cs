@@ -336,7 +336,7 @@ public static class Snapshot
         w.Vec(b.Omega);
         w.F32(b.Friction);
         w.F32(b.Elasticity);
-        w.Byte(b.MotionInterpreter ? (byte)1 : (byte)0);
+        w.Byte(b.HasMotionInterpreter ? (byte)1 : (byte)0);
         w.Vec(b.Acceleration);
         w.U32((uint)b.StationaryFall);
         w.F64(b.PendingTime);
@@ -355,7 +355,7 @@ public static class Snapshot
         byte interp = r.U8("body.motionInterpreter");
         if (interp > 1)
             throw r.Fail("body.motionInterpreter", $"must be 0 or 1, got {interp}");
-        b.MotionInterpreter = interp == 1;
+        b.HasMotionInterpreter = interp == 1;
         b.Acceleration = r.Vec("body.acceleration");
         uint fall = r.U32("body.stationaryFall");
         if (fall > 3)

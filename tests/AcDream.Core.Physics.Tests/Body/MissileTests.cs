@@ -199,6 +199,33 @@ public class MissileTests
     }
 
     /// <summary>
+    /// The first report clears Missile, AlignPath and PathClipped (handle_all_collisions), also between the quanta of
+    /// one step: 0.5 s stepped at once (quanta of 0.2, 0.2 and 0.1 s, the hit in the first) ends where the same arrow
+    /// ends stepped 0.2 s as a missile and then 0.3 s (0.2 and 0.1 s) as the plain body it has become, turned and
+    /// placed bit for bit (still aligning its path, it would turn to face its fall).
+    /// </summary>
+    [Fact]
+    public void AfterTheHit_TheRestOfTheSameStep_MovesAPlainBody()
+    {
+        var world = TestGeometry.FlatWorld();
+        AddWall(world, new Vector3(-5, 0, 0), new Vector3(5, 0.3f, 3));
+        var engine = new PhysicsEngine(world);
+        var once = Missile.Launch(ArrowId, 0.1f, TestGeometry.At(100, 99, 1.2f), new Vector3(0, 30, 0));
+        var split = Missile.Launch(ArrowId, 0.1f, TestGeometry.At(100, 99, 1.2f), new Vector3(0, 30, 0));
+
+        var whole = engine.Step(once, 0.5);
+        engine.Step(split, 0.2);
+        Assert.False(split.InFlight);
+        var rest = engine.Step(split.Description, split.State, split.Body, 0.3, Vector3.Zero);
+
+        Assert.Equal(MissileHitKind.Environment, whole.Hit.Kind); // the wall is static
+        Assert.Equal(1, whole.Hit.Quantum);
+        Assert.Equal(3, whole.Step.Quanta);
+        Assert.Equal(2, rest.Quanta);
+        Assert.True(Position.SameBits(rest.Next.Position, once.State.Position), $"{once.State.Position} {once.State.Position.Frame.Orientation}, as a plain body {rest.Next.Position} {rest.Next.Position.Frame.Orientation}");
+    }
+
+    /// <summary>
     /// missile_ignore (CObjectInfo.c:314069): between the archer and its target stand a creature that is not the
     /// target, an ethereal weenie object and another missile; the arrow passes all three and hits the target.
     /// </summary>

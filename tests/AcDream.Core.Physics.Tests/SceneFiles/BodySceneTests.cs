@@ -42,7 +42,7 @@ public class BodySceneTests
         Assert.Equal(new Vector3(1, 0, 0), mover.StartBody.Velocity);
         Assert.Equal(0.5f, mover.StartBody.Friction);
         Assert.Equal(0.1f, mover.StartBody.Elasticity);
-        Assert.False(mover.StartBody.MotionInterpreter);
+        Assert.False(mover.StartBody.HasMotionInterpreter);
     }
 
     [Fact]
@@ -53,7 +53,7 @@ public class BodySceneTests
         var body = SceneLoader.Load(doc.ToJsonString()).Movers[0].StartBody;
         Assert.Equal(PhysicsConstants.DefaultFriction, body.Friction);
         Assert.Equal(PhysicsConstants.DefaultElasticity, body.Elasticity);
-        Assert.True(body.MotionInterpreter);
+        Assert.True(body.HasMotionInterpreter);
     }
 
     [Fact]

@@ -18,7 +18,7 @@ public class SnapshotTests
         static string V(Vector3 v) => $"{BitConverter.SingleToInt32Bits(v.X)},{BitConverter.SingleToInt32Bits(v.Y)},{BitConverter.SingleToInt32Bits(v.Z)}";
         return $"{P(s.Position)} {s.Contact} {s.OnWalkable} {V(s.ContactPlane.Normal)} {BitConverter.SingleToInt32Bits(s.ContactPlane.D)} {s.ContactPlaneCellId:X8} {s.ContactPlaneIsWater} " +
             $"{s.SlidingNormalValid} {V(s.SlidingNormal)} {s.Ground} {s.GroundObjectId:X8} | {V(b.Velocity)} {V(b.Omega)} {BitConverter.SingleToInt32Bits(b.Friction)} " +
-            $"{BitConverter.SingleToInt32Bits(b.Elasticity)} {b.MotionInterpreter} {V(b.Acceleration)} {b.StationaryFall} {BitConverter.DoubleToInt64Bits(b.PendingTime)} {P(b.QuantumStart)}";
+            $"{BitConverter.SingleToInt32Bits(b.Elasticity)} {b.HasMotionInterpreter} {V(b.Acceleration)} {b.StationaryFall} {BitConverter.DoubleToInt64Bits(b.PendingTime)} {P(b.QuantumStart)}";
     }
 
     private sealed record Walk(List<string> Frames, byte[] Mover, byte[] Objects);
