@@ -175,14 +175,14 @@ public class DatWorldTests
         fromDat.LoadLandblock(0x8040);
         fromDat.LoadLandblock(0x8140);
         var direct = new PhysicsWorld();
-        var post = new PhysicsSetup { CylSpheres = [new Geometry.CylSphere(Vector3.Zero, 0.6f, 4f)], Height = 4f, Radius = 0.6f };
+        var post = new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.6f, 4f)], Height = 4f, Radius = 0.6f };
         foreach (uint lb in new uint[] { 0x8040, 0x8140 })
         {
             var heights = new float[81];
             for (int x = 0; x < 9; x++)
                 for (int y = 0; y < 9; y++)
                     heights[x * 9 + y] = WorldWriter.TableHeight(WorldWriter.HeightIndex(lb, x, y));
-            direct.LoadLandblock(new World.Terrain(lb, heights));
+            direct.LoadLandblock(new Terrain(lb, heights));
             direct.Objects.Register(0x7000_0000u | lb << 12, post, Position.Outdoor(lb, new Vector3(96f, 100.9f, 0f)), 1f, PhysicsState.Static);
         }
         Assert.Equal(Walk(direct), Walk(fromDat.World));
@@ -193,7 +193,7 @@ public class DatWorldTests
         var engine = new PhysicsEngine(world);
         var player = MoverDescription.Player();
         var state = engine.Place(player, Position.Outdoor(0x8040, new Vector3(60f, 100f, 17f))).Next;
-        var body = Body.BodyState.Creature();
+        var body = BodyState.Creature();
         var trace = new List<string>();
         for (int frame = 0; frame < 30 * 20; frame++)
         {

@@ -42,7 +42,7 @@ internal static class ManagerParityCheck
         var motion = new ObjectMotion(file.Table, file.Skills);
         motion.SetCylinder(CreatureRadius, CreatureHeight);
         var state = file.Start;
-        var body = Body.BodyState.Creature();
+        var body = BodyState.Creature();
         motion.Place(file.Mover, state, ref body);
         int frames = 0, within = 0, identical = 0, mismatches = 0;
         double maxDifference = 0;
@@ -83,7 +83,7 @@ internal static class ManagerParityCheck
             if (atCall && frame.TargetUpdate is { } first && sought != 0)
                 Update(motion, sought, first, frame.InterpolatedUpdate ?? first, file, state, body, f);
             bool endedBefore = motion.MoveToStatus == MoveToStatus.Ended;
-            Body.BodyStepResult step;
+            BodyStepResult step;
             try
             {
                 step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
@@ -181,7 +181,7 @@ internal static class ManagerParityCheck
     private static string Name(MoveToError e) => e == MoveToError.None ? "None" : e.ToString();
 
     // A target update the library refuses names the frame's recorded target position.
-    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, ManagerParityFile file, in MoverState state, in Body.BodyState body, int f)
+    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, ManagerParityFile file, in MoverState state, in BodyState body, int f)
     {
         try
         {

@@ -52,15 +52,15 @@ public sealed class TrajectoryFrame
     /// <summary>A motion mover's frame: its heading and the interpreted state after the step; null for other frames.</summary>
     public TrajectoryMotion? Motion { get; init; }
 
-    /// <summary>A missile's frame in which its hit was reported (<see cref="Body.MissileStepResult.Hit"/>); null for every other frame.</summary>
+    /// <summary>A missile's frame in which its hit was reported (<see cref="MissileStepResult.Hit"/>); null for every other frame.</summary>
     public TrajectoryHit? Hit { get; init; }
 
     /// <summary>Builds a missile's frame from its step's result: a body frame, with the hit when this step reported it.</summary>
-    public static TrajectoryFrame From(SceneStep step, in Body.MissileStepResult result)
+    public static TrajectoryFrame From(SceneStep step, in MissileStepResult result)
     {
         var frame = From(step, result.Step);
         var hit = result.Hit;
-        return hit.Kind == Body.MissileHitKind.None ? frame : Copy(frame, new TrajectoryHit(hit.Kind, hit.ObjectId, hit.Quantum));
+        return hit.Kind == MissileHitKind.None ? frame : Copy(frame, new TrajectoryHit(hit.Kind, hit.ObjectId, hit.Quantum));
     }
 
     private static TrajectoryFrame Copy(TrajectoryFrame f, TrajectoryHit hit) => new()
@@ -73,11 +73,11 @@ public sealed class TrajectoryFrame
     };
 
     /// <summary>Builds a body frame from its input and the engine's result (copies the collided ids).</summary>
-    public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result) =>
+    public static TrajectoryFrame From(SceneStep step, in BodyStepResult result) =>
         Build(default, step, result.Body.Velocity, result.Quanta, result.Move);
 
     /// <summary>Builds a body frame; with <paramref name="motion"/>, a motion mover's frame recording its heading and interpreted state.</summary>
-    internal static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result, Motion.ObjectMotion? motion) =>
+    internal static TrajectoryFrame From(SceneStep step, in BodyStepResult result, ObjectMotion? motion) =>
         Build(default, step, result.Body.Velocity, result.Quanta, result.Move,
             motion is null ? null : new TrajectoryMotion(result.Next.Position.Frame.Orientation, motion.Interpreted));
 
@@ -118,13 +118,13 @@ public sealed class TrajectoryFrame
 /// </summary>
 /// <param name="Rotation">The mover's rotation after the step.</param>
 /// <param name="Interpreted">The interpreted motion state after the step.</param>
-public readonly record struct TrajectoryMotion(Quaternion Rotation, Motion.InterpretedMotionState Interpreted);
+public readonly record struct TrajectoryMotion(Quaternion Rotation, InterpretedMotionState Interpreted);
 
-/// <summary>A missile's hit as a trajectory records it: what was hit and in which quantum of the flight (see <see cref="Body.MissileHit"/>).</summary>
+/// <summary>A missile's hit as a trajectory records it: what was hit and in which quantum of the flight (see <see cref="MissileHit"/>).</summary>
 /// <param name="Kind">Object or environment.</param>
 /// <param name="ObjectId">The object hit, or 0 for the environment.</param>
 /// <param name="Quantum">The quantum of the flight that hit, from 1.</param>
-public readonly record struct TrajectoryHit(Body.MissileHitKind Kind, uint ObjectId, int Quantum);
+public readonly record struct TrajectoryHit(MissileHitKind Kind, uint ObjectId, int Quantum);
 
 /// <summary>The frames of one mover of a scene.</summary>
 public sealed class MoverTrajectory
@@ -299,7 +299,7 @@ public sealed class Trajectory
     private static TrajectoryMotion ReadMotion(JsonObj o)
     {
         var rotation = JsonRead.RawQuaternion(o.Req("rotation"), o.Child("rotation"));
-        var i = new Motion.InterpretedMotionState { Style = o.Id("style") };
+        var i = new InterpretedMotionState { Style = o.Id("style") };
         (i.ForwardCommand, i.ForwardSpeed) = ReadCommand(o.Obj("forward"));
         (i.SideStepCommand, i.SideStepSpeed) = ReadCommand(o.Obj("sideStep"));
         (i.TurnCommand, i.TurnSpeed) = ReadCommand(o.Obj("turn"));
@@ -448,8 +448,8 @@ public sealed class Trajectory
         string kind = o.String("kind");
         var k = kind switch
         {
-            "Object" => Body.MissileHitKind.Object,
-            "Environment" => Body.MissileHitKind.Environment,
+            "Object" => MissileHitKind.Object,
+            "Environment" => MissileHitKind.Environment,
             _ => throw new SceneFormatException(o.Child("kind"), $"unknown hit kind \"{kind}\" (known: Object, Environment)."),
         };
         uint id = o.Id("object");

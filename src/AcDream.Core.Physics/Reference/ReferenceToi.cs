@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Geometry;
 namespace AcDream.Core.Physics.Reference;
 
 /// <summary>Which feature of a shape a swept sphere touched first.</summary>
-public enum ReferenceFeature : byte
+internal enum ReferenceFeature : byte
 {
     /// <summary>No contact.</summary>
     None = 0,
@@ -28,7 +28,7 @@ public enum ReferenceFeature : byte
 }
 
 /// <summary>The first contact of a swept sphere: when (fraction of the sweep), the contact normal (pointing from the shape to the sphere's centre), and the feature.</summary>
-public readonly struct ReferenceHit
+internal readonly struct ReferenceHit
 {
     /// <summary>Creates a hit.</summary>
     public ReferenceHit(float time, Vector3 normal, ReferenceFeature feature)
@@ -56,7 +56,7 @@ public readonly struct ReferenceHit
 /// smallest root of the distance equation |c + t·d − shape| = r; shapes are convex, so a sphere that is
 /// not approaching a shape at t = 0 never reaches it later in the same straight sweep.
 /// </summary>
-public static class ReferenceToi
+internal static class ReferenceToi
 {
     /// <summary>
     /// A sphere closer to a shape than its radius plus this slop counts as touching: it is stopped at t = 0
@@ -192,7 +192,7 @@ public static class ReferenceToi
         Polygon(c, d, r, polygon, Vector3.Zero, out hit);
 
     /// <summary>
-    /// <see cref="Polygon(Vector3, Vector3, float, Geometry.Polygon, out ReferenceHit)"/> for a polygon placed
+    /// <see cref="Polygon(Vector3, Vector3, float, AcDream.Core.Physics.Polygon, out ReferenceHit)"/> for a polygon placed
     /// <paramref name="shift"/> from the frame of <paramref name="start"/> (a neighbouring landblock's
     /// terrain). A ray's edge test runs in the start's frame, where the shifted corners of terrain are exact, so
     /// it stays watertight across landblock seams (shifting the start instead rounds it differently for each

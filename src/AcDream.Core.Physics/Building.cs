@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.World;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// A building standing in an outdoor cell (retail CBuildingObj): a shell model collided like an object

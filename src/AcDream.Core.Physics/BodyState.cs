@@ -1,13 +1,13 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// What a moving body carries from one frame to the next besides its <see cref="MoverState"/> (retail keeps
 /// these on CPhysicsObj): its velocity, spin, friction and elasticity, the acceleration it had on its last
 /// quantum, the stationary-fall counter, and the time not yet stepped. Pass it to
-/// <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/> and keep the <see cref="BodyStepResult.Body"/> it returns.
+/// <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/> and keep the <see cref="BodyStepResult.Body"/> it returns.
 /// </summary>
 public struct BodyState
 {
@@ -57,7 +57,7 @@ public struct BodyState
     public int StationaryFall { readonly get; internal set; }
 
     /// <summary>
-    /// Time handed to <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/> but not stepped yet, seconds: retail steps an object
+    /// Time handed to <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/> but not stepped yet, seconds: retail steps an object
     /// only once 1/30 s has gathered (<see cref="PhysicsConstants.MinQuantum"/>) and carries a short remainder
     /// after whole max quanta to the next tick (the lag of CPhysicsObj::update_time behind the clock).
     /// </summary>

@@ -1,8 +1,8 @@
 using System;
 
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
-/// <summary>The outcome of one <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>: the move, the body's new state, and how many quanta ran.</summary>
+/// <summary>The outcome of one <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/>: the move, the body's new state, and how many quanta ran.</summary>
 public readonly struct BodyStepResult
 {
     internal BodyStepResult(MoveResult move, BodyState body, int quanta, bool jumped)

@@ -1,8 +1,9 @@
 using System;
 using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 // The MoveTo side of the motion layer (retail MovementManager's MoveToManager): start, target updates, cancel, status.
 public sealed partial class ObjectMotion
@@ -32,8 +33,8 @@ public sealed partial class ObjectMotion
     }
 
     /// <summary>
-    /// What a move does when its progress check fails: the 2013 client's <see cref="Motion.MoveToProgressRule.CountOnly"/>
-    /// (default: count the failures, keep moving) or the opt-in server rule <see cref="Motion.MoveToProgressRule.GiveUp"/>
+    /// What a move does when its progress check fails: the 2013 client's <see cref="MoveToProgressRule.CountOnly"/>
+    /// (default: count the failures, keep moving) or the opt-in server rule <see cref="MoveToProgressRule.GiveUp"/>
     /// (end with CantGetThere after a further second of failed checks). Kept for every later move of this object.
     /// </summary>
     public MoveToProgressRule MoveToProgressRule

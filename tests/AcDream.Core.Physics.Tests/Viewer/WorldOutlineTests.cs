@@ -1,7 +1,8 @@
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
+using AcDream.Core.Physics.Viewer;
 
-namespace AcDream.Core.Physics.Tests.Diagnostics;
+namespace AcDream.Core.Physics.Tests.Viewer;
 
 /// <summary>The drawable outline of a world: every shape once, placed, marked by whether its object collides by it.</summary>
 public class WorldOutlineTests

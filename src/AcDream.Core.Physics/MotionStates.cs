@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// The interpreted motion state (retail InterpretedMotionState): what the object is doing after

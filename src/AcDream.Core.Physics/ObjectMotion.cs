@@ -1,8 +1,9 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Body;
+using AcDream.Core.Physics.Motion;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// The motion layer of one player or creature: its motion table, the interpreter's raw and interpreted

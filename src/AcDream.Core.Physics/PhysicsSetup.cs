@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Shapes;
+namespace AcDream.Core.Physics;
 
 /// <summary>One part of a setup: a physics model (or none) placed by a frame in the setup's space.</summary>
 public sealed class SetupPart

@@ -3,10 +3,11 @@ using System.Collections.Generic;
 using System.Numerics;
 using System.Runtime.ExceptionServices;
 using System.Threading;
+using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Bsp;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// Builds physics BSP trees (the retail BSPTREE shape) from convex polygons, for scenes written by hand
@@ -364,11 +365,26 @@ public static class BspCompiler
         return 0.5f * sum.Length();
     }
 
+    /// <summary>The corners of the six box faces (+X, −X, +Y, −Y, +Z, −Z), counter-clockwise from outside.</summary>
+    internal static Vector3[][] BoxCorners(Vector3 min, Vector3 max)
+    {
+        float x0 = min.X, y0 = min.Y, z0 = min.Z, x1 = max.X, y1 = max.Y, z1 = max.Z;
+        return
+        [
+            [new(x1, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x1, y0, z1)],
+            [new(x0, y0, z0), new(x0, y0, z1), new(x0, y1, z1), new(x0, y1, z0)],
+            [new(x0, y1, z0), new(x0, y1, z1), new(x1, y1, z1), new(x1, y1, z0)],
+            [new(x0, y0, z0), new(x1, y0, z0), new(x1, y0, z1), new(x0, y0, z1)],
+            [new(x0, y0, z1), new(x1, y0, z1), new(x1, y1, z1), new(x0, y1, z1)],
+            [new(x0, y0, z0), new(x0, y1, z0), new(x1, y1, z0), new(x1, y0, z0)],
+        ];
+    }
+
     /// <summary>The six faces of an axis-aligned box, as the starting region.</summary>
     private static List<Vector3[]> BoxCell(Vector3 min, Vector3 max)
     {
         var faces = new List<Vector3[]>();
-        foreach (var p in BspShapes.BoxCorners(min, max))
+        foreach (var p in BoxCorners(min, max))
             faces.Add(p);
         return faces;
     }

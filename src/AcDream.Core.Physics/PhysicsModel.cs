@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Shapes;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// The physics half of a retail GfxObj: a physics BSP and the bounding sphere tested before it.

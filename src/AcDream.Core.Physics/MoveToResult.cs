@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// How a MoveTo or turn ended: retail's WeenieError codes the MoveToManager passes to CancelMoveTo and

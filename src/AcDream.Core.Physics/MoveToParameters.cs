@@ -1,7 +1,7 @@
 using System;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 /// <summary>Retail's MovementParameters bits (the bitfield MovementParameters::get_command and the MoveToManager read).</summary>
 [Flags]

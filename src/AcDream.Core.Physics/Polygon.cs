@@ -1,8 +1,9 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Geometry;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// How retail treats the back of a polygon (the DAT's SidesType / CullMode). A single-sided polygon

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
 /// <summary>What a missile's flight ended on (retail's two reports: CPhysicsObj::report_object_collision and report_environment_collision).</summary>
 public enum MissileHitKind : byte

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
 /// <summary>What a <see cref="ContactEvent"/> reports.</summary>
 public enum ContactEventKind : byte

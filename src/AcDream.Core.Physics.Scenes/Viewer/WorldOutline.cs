@@ -6,10 +6,10 @@ using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics.Diagnostics;
+namespace AcDream.Core.Physics.Viewer;
 
 /// <summary>What an <see cref="OutlineShape"/> belongs to.</summary>
-public enum OutlineSource : byte
+internal enum OutlineSource : byte
 {
     /// <summary>An indoor cell's physics BSP.</summary>
     EnvCell,
@@ -20,7 +20,7 @@ public enum OutlineSource : byte
 }
 
 /// <summary>The form of an <see cref="OutlineShape"/>.</summary>
-public enum OutlineForm : byte
+internal enum OutlineForm : byte
 {
     /// <summary>A polygon (<see cref="OutlineShape.Vertices"/>).</summary>
     Polygon,
@@ -31,7 +31,7 @@ public enum OutlineForm : byte
 }
 
 /// <summary>One collision shape of the world placed in one landblock frame, for drawing.</summary>
-public sealed class OutlineShape
+internal sealed class OutlineShape
 {
     internal OutlineShape(OutlineSource source, OutlineForm form, uint cellId, uint objectId, bool collides,
         Vector3[] vertices, Vector3 center, float radius, float height)
@@ -77,7 +77,7 @@ public sealed class OutlineShape
 /// cylinders and spheres — placed in one landblock frame, for tools that draw a scene. Allocates; not
 /// for the per-frame path.
 /// </summary>
-public static class WorldOutline
+internal static class WorldOutline
 {
     /// <summary>The shapes, in the frame of <paramref name="frameCellId"/>'s landblock; each object shape once.</summary>
     public static IReadOnlyList<OutlineShape> Collect(PhysicsWorld world, uint frameCellId)

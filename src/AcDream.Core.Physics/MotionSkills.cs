@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// What the motion interpreter asks of the object's owner (retail CWeenieObject's InqRunRate,

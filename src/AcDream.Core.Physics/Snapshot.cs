@@ -4,8 +4,9 @@ using System.IO;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Shapes;
+using AcDream.Core.Physics.Snapshots;
 
-namespace AcDream.Core.Physics.Snapshots;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// A compact binary form of what changes while a world runs: a mover's <see cref="MoverState"/> and

@@ -1,9 +1,10 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
-namespace AcDream.Core.Physics.Bsp;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>
 /// Shorthands for simple physics shapes written by hand: boxes, floor quads and rotated slabs, as
@@ -22,7 +23,7 @@ public static class BspShapes
     public static Polygon[] BoxPolygons(Vector3 min, Vector3 max, PolygonSides sides = PolygonSides.Single)
     {
         CheckBox(min, max);
-        return MakePolygons(BoxCorners(min, max), sides, "box");
+        return MakePolygons(BspCompiler.BoxCorners(min, max), sides, "box");
     }
 
     /// <summary>
@@ -79,7 +80,7 @@ public static class BspShapes
         Guard.Positive(size.Y, "size.Y");
         Guard.Positive(size.Z, "size.Z");
         var q = Guard.Rotation(rotation, "rotation");
-        var faces = BoxCorners(-size * 0.5f, size * 0.5f);
+        var faces = BspCompiler.BoxCorners(-size * 0.5f, size * 0.5f);
         foreach (var face in faces)
             for (int i = 0; i < face.Length; i++)
                 face[i] = center + PortableRotation.Apply(face[i], q);
@@ -98,7 +99,7 @@ public static class BspShapes
     /// <summary>
     /// A containment tree for an indoor cell shaped like an axis-aligned box (cell space): a chain of its six
     /// faces' planes facing inward, no polygons. A point is inside the cell when it is in front of all six
-    /// (<see cref="World.EnvCell.ContainsPoint"/>); pass it as an <see cref="World.EnvCell"/>'s cell BSP.
+    /// (<see cref="EnvCell.ContainsPoint"/>); pass it as an <see cref="EnvCell"/>'s cell BSP.
     /// Retail cells carry their own containment trees (CellStruct's cell BSP); this one is for worlds built by hand.
     /// </summary>
     /// <param name="min">The low corner.</param>
@@ -119,21 +120,6 @@ public static class BspShapes
         for (int i = 0; i < 6; i++)
             nodes[i] = new BspNodeData { SplitPlane = planes[i], Front = i < 5 ? i + 1 : -1, Back = -1, Bounds = bounds };
         return BspTree.Create(Array.Empty<Polygon>(), nodes, "cellBox");
-    }
-
-    /// <summary>The corners of the six box faces (+X, −X, +Y, −Y, +Z, −Z), counter-clockwise from outside.</summary>
-    internal static Vector3[][] BoxCorners(Vector3 min, Vector3 max)
-    {
-        float x0 = min.X, y0 = min.Y, z0 = min.Z, x1 = max.X, y1 = max.Y, z1 = max.Z;
-        return
-        [
-            [new(x1, y0, z0), new(x1, y1, z0), new(x1, y1, z1), new(x1, y0, z1)],
-            [new(x0, y0, z0), new(x0, y0, z1), new(x0, y1, z1), new(x0, y1, z0)],
-            [new(x0, y1, z0), new(x0, y1, z1), new(x1, y1, z1), new(x1, y1, z0)],
-            [new(x0, y0, z0), new(x1, y0, z0), new(x1, y0, z1), new(x0, y0, z1)],
-            [new(x0, y0, z1), new(x1, y0, z1), new(x1, y1, z1), new(x0, y1, z1)],
-            [new(x0, y0, z0), new(x0, y1, z0), new(x1, y1, z0), new(x1, y0, z0)],
-        ];
     }
 
     private static void CheckBox(Vector3 min, Vector3 max)

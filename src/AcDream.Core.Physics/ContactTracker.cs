@@ -1,6 +1,6 @@
 using System;
 
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// Retail's collision records of one mover (CPhysicsObj's collision_table and colliding_with_environment,

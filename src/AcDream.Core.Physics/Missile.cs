@@ -1,11 +1,12 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
 using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// A projectile in flight, stepped by <see cref="PhysicsEngine.Step(Missile, double)"/>: retail's CPhysicsObj

@@ -1,4 +1,4 @@
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// Retail's motion command ids (the MotionCommand enumeration of the client, as the DAT's motion tables key

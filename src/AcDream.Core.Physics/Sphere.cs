@@ -1,7 +1,8 @@
 using System.Numerics;
+using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 
-namespace AcDream.Core.Physics.Geometry;
+namespace AcDream.Core.Physics;
 
 /// <summary>A sphere: a centre and a radius (retail CSphere's data). Collision routines live in <see cref="SphereCollision"/>.</summary>
 public struct Sphere

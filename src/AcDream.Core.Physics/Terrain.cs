@@ -2,8 +2,9 @@ using System;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics.World;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// The terrain of one landblock: a 9×9 grid of heights (metres) at the corners of its 8×8 land cells,

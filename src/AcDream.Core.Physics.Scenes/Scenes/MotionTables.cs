@@ -1,7 +1,8 @@
 using System.Collections.Generic;
 using System.Numerics;
+using AcDream.Core.Physics.Motion;
 
-namespace AcDream.Core.Physics.Motion;
+namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>Built-in motion tables.</summary>
 public static class MotionTables

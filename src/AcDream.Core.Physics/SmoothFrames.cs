@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace AcDream.Core.Physics.Body;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// Drawing a body between quanta (not retail: retail draws the physics pose as it is). <c>PhysicsEngine.Step</c>

@@ -5,8 +5,9 @@ using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
+using AcDream.Core.Physics.World;
 
-namespace AcDream.Core.Physics.World;
+namespace AcDream.Core.Physics;
 
 /// <summary>
 /// An opening of an indoor cell (retail CCellPortal): a polygon in the cell's space and the cell on the
