@@ -9,11 +9,7 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Motion;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
+using AcDream.Core.Physics.Scenes;                                    // the built-in humanoid motion table
 
 const uint landblock = 0xA9B4;
 var world = new PhysicsWorld();

@@ -10,9 +10,7 @@ using System;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Dat;
-using AcDream.Core.Physics.Motion;
 #endregion
 
 string folder = Path.Combine(Path.GetTempPath(), "acdream-datwalk-" + Guid.NewGuid().ToString("N"));
@@ -40,8 +38,9 @@ static int Walk(string folder)
 
     // A player runs east by motion commands; each time it crosses into another landblock the window follows.
     var player = MoverDescription.Player();
-    var motion = new ObjectMotion(MotionTables.Humanoid(), new RetailSkills(runSkill: 200, jumpSkill: 200));
-    var body = BodyState.Creature();                                    // (a DAT motion table: DatMotionTables.Load)
+    var table = DatMotionTables.Load(files, 0x09000001);                // the runner's motion table and its animations
+    var motion = new ObjectMotion(table, new RetailSkills(runSkill: 200, jumpSkill: 200));
+    var body = BodyState.Creature();
     var at = Position.Outdoor(start, new Vector3(40f, 100f, 6f));
     at.Frame.Orientation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, -MathF.PI / 2);  // face east (forward is +Y)
     var runner = engine.Place(player, at).Next;

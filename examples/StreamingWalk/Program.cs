@@ -11,11 +11,6 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.Snapshots;
-using AcDream.Core.Physics.World;
 
 // The host's data: rolling terrain from the global grid (neighbouring landblocks meet), and in every
 // landblock a post just beside the runner's line.

@@ -9,13 +9,7 @@ using System;
 using System.IO;
 using System.Numerics;
 using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 
 const uint landblock = 0xA9B4;                                        // landblock x 0xA9, y 0xB4: 192 m × 192 m
 var world = new PhysicsWorld();

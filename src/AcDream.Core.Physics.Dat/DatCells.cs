@@ -4,7 +4,7 @@ using AcDream.Core.Physics.World;
 using DatReaderWriter.Enums;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
-using EnvCell = AcDream.Core.Physics.World.EnvCell;
+using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat;
 
@@ -72,7 +72,7 @@ public static class DatCells
             var portal = cell.CellPortals![i] ?? throw new DatObjectException(id, $"cellPortals[{i}]: is null.");
             if (source.Polygons is null || !source.Polygons.TryGetValue(portal.PolygonId, out var datPolygon))
                 throw new DatObjectException(id, $"cellPortals[{i}].polygonId: polygon {portal.PolygonId} is not in environment 0x{structure.EnvironmentId:X8} structure {structure.Index}.");
-            Geometry.Polygon polygon;
+            Polygon polygon;
             try
             {
                 polygon = DatGeometry.ToPolygon(structure.EnvironmentId, $"cells[{structure.Index}].polygons[{portal.PolygonId}]", datPolygon, source.VertexArray);

@@ -7,8 +7,8 @@ using AcDream.Core.Physics.Validation;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 using DatPolygon = DatReaderWriter.Types.Polygon;
-using Polygon = AcDream.Core.Physics.Geometry.Polygon;
-using Sphere = AcDream.Core.Physics.Geometry.Sphere;
+using Polygon = AcDream.Core.Physics.Polygon;
+using Sphere = AcDream.Core.Physics.Sphere;
 
 namespace AcDream.Core.Physics.Dat;
 

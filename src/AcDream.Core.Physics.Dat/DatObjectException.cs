@@ -3,7 +3,7 @@ using System;
 namespace AcDream.Core.Physics.Dat;
 
 /// <summary>
-/// A DAT object the adapter refuses: a polygon our <see cref="Geometry.Polygon"/> rejects, a BSP tree with an
+/// A DAT object the adapter refuses: a polygon our <see cref="Polygon"/> rejects, a BSP tree with an
 /// out-of-range or cyclic child, a count beyond the runtime's limits, a reference to an id that is missing.
 /// The message names the object ("GfxObj 0x01000A2B: physicsPolygons[17]: …") and, once known, the DAT file.
 /// Nothing is built from a refused object.

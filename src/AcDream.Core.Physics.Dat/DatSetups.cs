@@ -3,8 +3,8 @@ using System.Collections.Generic;
 using AcDream.Core.Physics.Shapes;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
-using CylSphere = AcDream.Core.Physics.Geometry.CylSphere;
-using Sphere = AcDream.Core.Physics.Geometry.Sphere;
+using CylSphere = AcDream.Core.Physics.CylSphere;
+using Sphere = AcDream.Core.Physics.Sphere;
 
 namespace AcDream.Core.Physics.Dat;
 

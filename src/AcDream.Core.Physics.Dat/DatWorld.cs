@@ -6,7 +6,7 @@ using DatReaderWriter.DBObjs;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
-using EnvCell = AcDream.Core.Physics.World.EnvCell;
+using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat;
 

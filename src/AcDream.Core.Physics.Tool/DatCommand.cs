@@ -107,8 +107,8 @@ internal static class DatCommand
             Consider(files.ReadPortal<GfxObj>(model).PhysicsBSP?.Root, $"GfxObj 0x{model:X8}");
 
         float low = float.MaxValue, high = float.MinValue;
-        for (int x = 0; x < World.Terrain.VerticesPerSide; x++)
-            for (int y = 0; y < World.Terrain.VerticesPerSide; y++)
+        for (int x = 0; x < Terrain.VerticesPerSide; x++)
+            for (int y = 0; y < Terrain.VerticesPerSide; y++)
             {
                 low = MathF.Min(low, block.Terrain.HeightAt(x, y));
                 high = MathF.Max(high, block.Terrain.HeightAt(x, y));

@@ -6,6 +6,7 @@ using System.Numerics;
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
 using ScottPlot;
+using AcDream.Core.Physics.Viewer;
 
 namespace AcDream.Core.Physics.Tool;
 

@@ -81,7 +81,7 @@ internal static class QueryCommand
     private static Position Start(PhysicsWorld world, uint frameCell, Vector3 point)
     {
         foreach (uint id in world.Cells.CellIds)
-            if (world.Cells.Get(id) is World.EnvCell env && env.ContainsPoint(point - LandDefs.BlockOffset(frameCell, id)))
+            if (world.Cells.Get(id) is EnvCell env && env.ContainsPoint(point - LandDefs.BlockOffset(frameCell, id)))
                 return new Position(id, point - LandDefs.BlockOffset(frameCell, id));
         return new Position(frameCell, point);
     }

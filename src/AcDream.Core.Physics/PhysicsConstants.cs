@@ -94,7 +94,7 @@ public static class PhysicsConstants
     /// <summary>
     /// Seconds after its last touch at which retail forgets a collision record and reports the end of the
     /// contact: CPhysicsObj::report_collision_end ends a record when curr_time − touched_time &gt; 1.0
-    /// (CPhysicsObj.c:6177), or &gt; 0 for an ethereal object. See <see cref="Body.ContactTracker"/>.
+    /// (CPhysicsObj.c:6177), or &gt; 0 for an ethereal object. See <see cref="ContactTracker"/>.
     /// </summary>
     public const double CollisionRecordTimeout = 1.0;
 

@@ -23,7 +23,7 @@ public sealed partial class PhysicsEngine
     /// falls (<see cref="MoverDescription.With"/> makes the copy without it).
     /// Not retail: the desired velocity stands for the animation's root motion, which retail applies per
     /// animation frame from the object's motion table; a player or creature with a motion table steps with
-    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, Motion.ObjectMotion, double)"/> instead.
+    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, ObjectMotion, double)"/> instead.
     /// </summary>
     /// <param name="mover">What the mover is (its PhysicsState decides Gravity, EdgeSlide, Sledding, Inelastic, Hidden, Frozen).</param>
     /// <param name="state">Where it is and how it stands.</param>
@@ -99,7 +99,7 @@ public sealed partial class PhysicsEngine
     /// <param name="motion">Its motion layer (commands are given to it between steps).</param>
     /// <param name="elapsed">Seconds since the last call, zero or more.</param>
     /// <exception cref="ArgumentException">A non-finite, negative or out-of-range argument, named in the message; nothing is changed.</exception>
-    public BodyStepResult Step(MoverDescription mover, in MoverState state, in BodyState body, Motion.ObjectMotion motion, double elapsed)
+    public BodyStepResult Step(MoverDescription mover, in MoverState state, in BodyState body, ObjectMotion motion, double elapsed)
     {
         ArgumentNullException.ThrowIfNull(mover);
         ArgumentNullException.ThrowIfNull(motion);

@@ -8,7 +8,7 @@ public sealed partial class PhysicsEngine
 {
     /// <summary>
     /// Advances a body by <paramref name="elapsed"/> seconds and keeps the outcome in it: a body with a motion layer as
-    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, Motion.ObjectMotion, double)"/> steps it, one without
+    /// <see cref="Step(MoverDescription, in MoverState, in BodyState, ObjectMotion, double)"/> steps it, one without
     /// as <see cref="Step(MoverDescription, in MoverState, in BodyState, double, Vector3, float)"/> with no desired velocity
     /// (it moves by its velocity and gravity: a thrown item, a falling body). Then <see cref="PhysicsObject.State"/> and
     /// <see cref="PhysicsObject.Body"/> hold the step's <see cref="BodyStepResult.Next"/> and <see cref="BodyStepResult.Body"/>.

@@ -29,7 +29,7 @@ public sealed partial class PhysicsEngine
     internal Transition Transition => _transition;
 
     /// <summary>Sub-step length in sphere radii: 1 (default) is retail; see <see cref="Transition.SubStepScale"/>.</summary>
-    public float SubStepScale
+    internal float SubStepScale
     {
         get => _transition.SubStepScale;
         set

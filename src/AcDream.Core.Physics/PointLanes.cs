@@ -75,7 +75,7 @@ internal struct PointLanes
 
     /// <summary>
     /// Points 0, 1 and 2 as rows (x, y, z, w) with w from the same lane of <paramref name="w"/>: the layout of
-    /// a <see cref="Geometry.Sphere"/> (centre, radius), stored with one write each.
+    /// a <see cref="Sphere"/> (centre, radius), stored with one write each.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly void Rows(Vector128<float> w, out Vector128<float> row0, out Vector128<float> row1, out Vector128<float> row2)

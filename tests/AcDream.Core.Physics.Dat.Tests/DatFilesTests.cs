@@ -4,6 +4,7 @@ using AcDream.Core.Physics.Motion;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
+using AcDream.Core.Physics.Scenes;
 using DrwAnimation = DatReaderWriter.DBObjs.Animation;
 using DrwMotionTable = DatReaderWriter.DBObjs.MotionTable;
 

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Motion;
 using AcDream.Core.Physics.Motion;
 using AnimationFlags = DatReaderWriter.Enums.AnimationFlags;

@@ -76,12 +76,12 @@ public class DatWorldTests
         var world = new DatWorld(files, describe: (lb, i, owner, oi, p) =>
         {
             seen.Add((lb, i, owner, oi));
-            return new DatObjectDescription(0x5000_0000u + (uint)i, 2f, PhysicsState.Static | PhysicsState.Ethereal, World.ShadowFlags.None);
+            return new DatObjectDescription(0x5000_0000u + (uint)i, 2f, PhysicsState.Static | PhysicsState.Ethereal, ShadowFlags.None);
         });
         world.LoadLandblock(0x8040);
         Assert.Equal([(0x8040u, 0, 0x8040FFFEu, 0), (0x8040u, 1, 0x8040FFFEu, 1)], seen);
         Assert.True(world.World.Objects.Contains(0x5000_0001));
-        var same = new DatWorld(files, describe: (lb, i, owner, oi, p) => new DatObjectDescription(7, 1f, PhysicsState.Static, World.ShadowFlags.None));
+        var same = new DatWorld(files, describe: (lb, i, owner, oi, p) => new DatObjectDescription(7, 1f, PhysicsState.Static, ShadowFlags.None));
         var ex = Assert.Throws<DatObjectException>(() => same.LoadLandblock(0x8040));
         Assert.Contains("client_cell_1.dat", ex.Message);
         Assert.Contains("0x8040FFFE", ex.Message);
@@ -99,7 +99,7 @@ public class DatWorldTests
             [WorldWriter.Land(0x8040), info, WorldWriter.Land(0x8041), WorldWriter.Info(0x8041, 0, (Post, new Vector3(30, 30, 0)))]);
         using var files = dats.Open();
         var world = new DatWorld(files, describe: (lb, i, owner, oi, p) =>
-            new DatObjectDescription(lb << 8 | (uint)i, lb == 0x8040 && i == 1 ? float.NaN : 1f, PhysicsState.Static, World.ShadowFlags.None));
+            new DatObjectDescription(lb << 8 | (uint)i, lb == 0x8040 && i == 1 ? float.NaN : 1f, PhysicsState.Static, ShadowFlags.None));
         world.LoadLandblock(0x8041);
         var cells = world.World.Cells.CellIds.Order().ToList();
         var ex = Assert.Throws<ArgumentException>(() => world.LoadLandblock(0x8040));
@@ -175,14 +175,14 @@ public class DatWorldTests
         fromDat.LoadLandblock(0x8040);
         fromDat.LoadLandblock(0x8140);
         var direct = new PhysicsWorld();
-        var post = new PhysicsSetup { CylSpheres = [new Geometry.CylSphere(Vector3.Zero, 0.6f, 4f)], Height = 4f, Radius = 0.6f };
+        var post = new PhysicsSetup { CylSpheres = [new CylSphere(Vector3.Zero, 0.6f, 4f)], Height = 4f, Radius = 0.6f };
         foreach (uint lb in new uint[] { 0x8040, 0x8140 })
         {
             var heights = new float[81];
             for (int x = 0; x < 9; x++)
                 for (int y = 0; y < 9; y++)
                     heights[x * 9 + y] = WorldWriter.TableHeight(WorldWriter.HeightIndex(lb, x, y));
-            direct.LoadLandblock(new World.Terrain(lb, heights));
+            direct.LoadLandblock(new Terrain(lb, heights));
             direct.Objects.Register(0x7000_0000u | lb << 12, post, Position.Outdoor(lb, new Vector3(96f, 100.9f, 0f)), 1f, PhysicsState.Static);
         }
         Assert.Equal(Walk(direct), Walk(fromDat.World));
@@ -193,7 +193,7 @@ public class DatWorldTests
         var engine = new PhysicsEngine(world);
         var player = MoverDescription.Player();
         var state = engine.Place(player, Position.Outdoor(0x8040, new Vector3(60f, 100f, 17f))).Next;
-        var body = Body.BodyState.Creature();
+        var body = BodyState.Creature();
         var trace = new List<string>();
         for (int frame = 0; frame < 30 * 20; frame++)
         {

@@ -34,7 +34,7 @@ public class ToolDatTests
         // (its env cells, portals, building, objects and their trees, walked node by node here).
         var world = Scenes.SceneLibrary.Load("cottage").World;
         using var dats = DatWorldPath.Write(Support.WorldDat.From(world));
-        var cells = world.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).Select(id => (World.EnvCell)world.Cells.Get(id)!).ToList();
+        var cells = world.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).Select(id => (EnvCell)world.Cells.Get(id)!).ToList();
         uint landblock = cells[0].Id >> 16;
         var records = world.Objects.Records.ToList();
         int portals = cells.Sum(c => c.Portals.Length), outside = cells.Sum(c => c.Portals.ToArray().Count(p => p.LeadsOutside));

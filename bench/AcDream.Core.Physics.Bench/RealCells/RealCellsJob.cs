@@ -18,7 +18,7 @@ namespace AcDream.Core.Physics.Bench.RealCells;
 /// <summary>
 /// The real-cells job: the cost per resolve on real Holtburg cells (the shared real-cells set), next to
 /// the door, with each model's physics BSP as shipped in the set (every polygon in one leaf) and as
-/// <see cref="Bsp.BspCompiler"/> builds it from the same polygons; and whether the compiled trees change
+/// <see cref="BspCompiler"/> builds it from the same polygons; and whether the compiled trees change
 /// any result. Skips with a message (exit 0) when the shared folder is absent.
 /// </summary>
 public static class RealCellsJob

@@ -9,6 +9,7 @@ using System.Threading.Tasks;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Bench.Reporting;
+using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Bench.Server;
 

@@ -69,7 +69,7 @@ internal static class MotionParityCheck
                 if (result != call.Expected)
                     callFailure ??= $"call {call.Kind} 0x{call.Motion:X8}: expected {call.Expected}, actual {result}";
             }
-            Body.BodyStepResult step;
+            BodyStepResult step;
             try
             {
                 step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
@@ -117,7 +117,7 @@ internal static class MotionParityCheck
     internal static SceneFormatException Refused(string path, string what, ArgumentException ex) =>
         new(path, $"{what} was refused: {SceneFormatException.Wrap(string.Empty, ex).Detail}", ex);
 
-    private static string Apply(ObjectMotion motion, in MotionCall call, MoverDescription mover, ref MoverState state, ref Body.BodyState body)
+    private static string Apply(ObjectMotion motion, in MotionCall call, MoverDescription mover, ref MoverState state, ref BodyState body)
     {
         switch (call.Kind)
         {

@@ -39,7 +39,7 @@ internal static class MoveToParityCheck
         var motion = new ObjectMotion(file.Table, file.Skills);
         motion.SetCylinder(CreatureRadius, CreatureHeight);
         var state = file.Start;
-        var body = Body.BodyState.Creature();
+        var body = BodyState.Creature();
         motion.Place(file.Mover, state, ref body);
         int frames = 0, within = 0, identical = 0, mismatches = 0;
         double maxDifference = 0;
@@ -80,7 +80,7 @@ internal static class MoveToParityCheck
             if (atCall && frame.TargetUpdate is { } first && sought != 0)
                 Update(motion, sought, first, frame.InterpolatedUpdate ?? first, file, state, body, f);
             bool endedBefore = motion.MoveToStatus == MoveToStatus.Ended;
-            Body.BodyStepResult step;
+            BodyStepResult step;
             try
             {
                 step = engine.Step(file.Mover, state, body, motion, file.FrameSeconds);
@@ -183,7 +183,7 @@ internal static class MoveToParityCheck
     private static string Name(MoveToError e) => e == MoveToError.None ? "None" : e.ToString();
 
     // A target update the library refuses names the frame's recorded target position.
-    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, MoveToParityFile file, in MoverState state, in Body.BodyState body, int f)
+    private static void Update(ObjectMotion motion, uint sought, in Position update, in Position interpolated, MoveToParityFile file, in MoverState state, in BodyState body, int f)
     {
         try
         {

@@ -49,7 +49,7 @@ internal static class PositionManagerParityCheck
         var engine = new PhysicsEngine(file.World);
         var motion = new ObjectMotion(file.Table, file.Skills);
         var state = file.Start;
-        var body = Body.BodyState.Creature();
+        var body = BodyState.Creature();
         motion.Place(file.Mover, state, ref body);
         var manager = motion.PositionManager;
         int n = file.Frames.Length, stickEnded = -1;

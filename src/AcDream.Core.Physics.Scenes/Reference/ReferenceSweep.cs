@@ -109,7 +109,7 @@ public sealed class ReferenceSweep
     }
 
     /// <summary>The earliest contact of any of the mover's spheres (at <paramref name="origin"/>) moving by <paramref name="displacement"/>.</summary>
-    public bool Earliest(ReadOnlySpan<Sphere> spheres, Vector3 origin, Vector3 displacement, out ImpactHit hit)
+    internal bool Earliest(ReadOnlySpan<Sphere> spheres, Vector3 origin, Vector3 displacement, out ImpactHit hit)
     {
         hit = default;
         bool found = false;

@@ -7,7 +7,7 @@ namespace AcDream.Core.Physics.Scenes;
 /// <summary>
 /// A mover of a scene: what it is, where it starts, and for every frame either its requested offset (moved by
 /// <see cref="PhysicsEngine.Resolve"/>) or, for a body mover, its elapsed time, desired motion and jump (moved
-/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>),
+/// by <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in BodyState, double, System.Numerics.Vector3, float)"/>),
 /// or, for a motion mover (<see cref="IsMotion"/>), its elapsed time and the motion commands given before each step.
 /// </summary>
 public sealed class SceneMover
@@ -20,7 +20,7 @@ public sealed class SceneMover
 
     private readonly int[] _frameItemStarts = [0];
 
-    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody)
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, BodyState startBody)
     {
         Name = name;
         Description = description;
@@ -30,7 +30,7 @@ public sealed class SceneMover
         StartBody = startBody;
     }
 
-    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, Body.BodyState startBody,
+    internal SceneMover(string name, MoverDescription description, MoverState start, Vector3[] motion, SceneStep[] steps, BodyState startBody,
         string path, int[] frameItemStarts, SceneMotion? commands = null)
         : this(name, description, start, motion, steps, startBody)
     {
@@ -58,7 +58,7 @@ public sealed class SceneMover
     /// <summary>A motion mover's table, skills and commands (its steps carry only the elapsed time); null otherwise.</summary>
     internal SceneMotion? Commands { get; }
 
-    /// <summary>The mover is driven by motion commands through a motion table (<see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, AcDream.Core.Physics.Motion.ObjectMotion, double)"/>).</summary>
+    /// <summary>The mover is driven by motion commands through a motion table (<see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in BodyState, ObjectMotion, double)"/>).</summary>
     public bool IsMotion => Commands is not null;
 
     /// <summary>The mover's JSON path in its scene file (e.g. <c>movers[3]</c>), for error messages.</summary>
@@ -78,15 +78,15 @@ public sealed class SceneMover
         return $"{Path}.{(IsBody ? "steps" : "motion")}[{item}]";
     }
 
-    /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>.</summary>
+    /// <summary>The mover is a body: its frames are <see cref="Steps"/>, run through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in BodyState, double, System.Numerics.Vector3, float)"/>.</summary>
     public bool IsBody => _steps.Length > 0;
     /// <summary>
     /// The mover is a missile: a body (<see cref="IsBody"/>) whose state has <see cref="PhysicsState.Missile"/>, run as a
-    /// <see cref="Body.Missile"/> through <see cref="PhysicsEngine.Step(Body.Missile, double)"/> (its hit recorded once).
+    /// <see cref="Missile"/> through <see cref="PhysicsEngine.Step(Missile, double)"/> (its hit recorded once).
     /// </summary>
     public bool IsMissile => IsBody && !IsMotion && (Description.PhysicsState & PhysicsState.Missile) != 0;
     /// <summary>A body mover's state before the first frame (velocity, friction, elasticity…).</summary>
-    public Body.BodyState StartBody { get; }
+    public BodyState StartBody { get; }
     /// <summary>A body mover's frames, repeats expanded; empty for an offset mover.</summary>
     public ReadOnlySpan<SceneStep> Steps => _steps;
 

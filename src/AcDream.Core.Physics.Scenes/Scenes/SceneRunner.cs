@@ -9,7 +9,7 @@ namespace AcDream.Core.Physics.Scenes;
 /// <summary>
 /// Runs a scene: every mover, alone, frame by frame through one <see cref="PhysicsEngine"/>, each frame
 /// requesting the mover's current position plus that frame's offset (same cell label and orientation),
-/// as a client's per-frame motion would; a body mover's frames go through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>
+/// as a client's per-frame motion would; a body mover's frames go through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/>
 /// with its elapsed time, desired motion and jump.
 /// </summary>
 public static class SceneRunner
@@ -108,7 +108,7 @@ public static class SceneRunner
         return TrajectoryFrame.From(target, result);
     }
 
-    /// <summary>A missile mover's <see cref="Body.Missile"/> at its start (airborne, with its start body), or null for any other mover.</summary>
+    /// <summary>A missile mover's <see cref="Missile"/> at its start (airborne, with its start body), or null for any other mover.</summary>
     internal static Missile? Launch(SceneMover mover)
     {
         if (!mover.IsMissile)

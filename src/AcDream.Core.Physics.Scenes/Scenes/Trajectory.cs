@@ -165,7 +165,7 @@ public sealed class Trajectory
     private static TrajectoryMotion ReadMotion(JsonObj o)
     {
         var rotation = JsonRead.RawQuaternion(o.Req("rotation"), o.Child("rotation"));
-        var i = new Motion.InterpretedMotionState { Style = o.Id("style") };
+        var i = new InterpretedMotionState { Style = o.Id("style") };
         (i.ForwardCommand, i.ForwardSpeed) = ReadCommand(o.Obj("forward"));
         (i.SideStepCommand, i.SideStepSpeed) = ReadCommand(o.Obj("sideStep"));
         (i.TurnCommand, i.TurnSpeed) = ReadCommand(o.Obj("turn"));
@@ -314,8 +314,8 @@ public sealed class Trajectory
         string kind = o.String("kind");
         var k = kind switch
         {
-            "Object" => Body.MissileHitKind.Object,
-            "Environment" => Body.MissileHitKind.Environment,
+            "Object" => MissileHitKind.Object,
+            "Environment" => MissileHitKind.Environment,
             _ => throw new SceneFormatException(o.Child("kind"), $"unknown hit kind \"{kind}\" (known: Object, Environment)."),
         };
         uint id = o.Id("object");

@@ -49,15 +49,15 @@ public sealed class TrajectoryFrame
     /// <summary>A motion mover's frame: its heading and the interpreted state after the step; null for other frames.</summary>
     public TrajectoryMotion? Motion { get; init; }
 
-    /// <summary>A missile's frame in which its hit was reported (<see cref="Body.MissileStepResult.Hit"/>); null for every other frame.</summary>
+    /// <summary>A missile's frame in which its hit was reported (<see cref="MissileStepResult.Hit"/>); null for every other frame.</summary>
     public TrajectoryHit? Hit { get; init; }
 
     /// <summary>Builds a missile's frame from its step's result: a body frame, with the hit when this step reported it.</summary>
-    public static TrajectoryFrame From(SceneStep step, in Body.MissileStepResult result)
+    public static TrajectoryFrame From(SceneStep step, in MissileStepResult result)
     {
         var frame = From(step, result.Step);
         var hit = result.Hit;
-        return hit.Kind == Body.MissileHitKind.None ? frame : Copy(frame, new TrajectoryHit(hit.Kind, hit.ObjectId, hit.Quantum));
+        return hit.Kind == MissileHitKind.None ? frame : Copy(frame, new TrajectoryHit(hit.Kind, hit.ObjectId, hit.Quantum));
     }
 
     private static TrajectoryFrame Copy(TrajectoryFrame f, TrajectoryHit hit) => new()
@@ -70,11 +70,11 @@ public sealed class TrajectoryFrame
     };
 
     /// <summary>Builds a body frame from its input and the engine's result (copies the collided ids).</summary>
-    public static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result) =>
+    public static TrajectoryFrame From(SceneStep step, in BodyStepResult result) =>
         Build(default, step, result.Body.Velocity, result.Quanta, result.Move);
 
     /// <summary>Builds a body frame; with <paramref name="motion"/>, a motion mover's frame recording its heading and interpreted state.</summary>
-    internal static TrajectoryFrame From(SceneStep step, in Body.BodyStepResult result, Motion.ObjectMotion? motion) =>
+    internal static TrajectoryFrame From(SceneStep step, in BodyStepResult result, ObjectMotion? motion) =>
         Build(default, step, result.Body.Velocity, result.Quanta, result.Move,
             motion is null ? null : new TrajectoryMotion(result.Next.Position.Frame.Orientation, motion.Interpreted));
 

@@ -8,4 +8,4 @@ namespace AcDream.Core.Physics.Scenes;
 /// </summary>
 /// <param name="Rotation">The mover's rotation after the step.</param>
 /// <param name="Interpreted">The interpreted motion state after the step.</param>
-public readonly record struct TrajectoryMotion(Quaternion Rotation, Motion.InterpretedMotionState Interpreted);
+public readonly record struct TrajectoryMotion(Quaternion Rotation, InterpretedMotionState Interpreted);

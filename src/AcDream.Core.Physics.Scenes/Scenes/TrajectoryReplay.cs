@@ -53,7 +53,7 @@ public static class TrajectoryReplay
             var body = mover.StartBody;
             // A StickTo follows the earlier movers' recorded frames (compared equal before this mover is replayed).
             var motion = mover.Commands?.Start(mover.Description, state, ref body, SceneRunner.Earlier(scene, trajectory.Movers, m));
-            Body.Missile? missile;
+            Missile? missile;
             try
             {
                 missile = SceneRunner.Launch(mover);

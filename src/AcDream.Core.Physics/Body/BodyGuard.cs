@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Validation;
 namespace AcDream.Core.Physics.Body;
 
 /// <summary>
-/// The checks of <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>'s body arguments, each naming its field. Messages are
+/// The checks of <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/>'s body arguments, each naming its field. Messages are
 /// built only on failure, so the success path allocates nothing.
 /// </summary>
 internal static class BodyGuard

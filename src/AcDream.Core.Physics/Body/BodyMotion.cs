@@ -6,7 +6,7 @@ namespace AcDream.Core.Physics.Body;
 /// <summary>
 /// Retail's per-quantum body arithmetic (CPhysicsObj, acclient-src PORTAL/cphysobj/CPhysicsObj.c):
 /// acceleration, friction, integration, the collision response and the leave-ground velocity. Pure
-/// functions of their arguments; <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/> strings them together.
+/// functions of their arguments; <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/> strings them together.
 /// </summary>
 internal static class BodyMotion
 {

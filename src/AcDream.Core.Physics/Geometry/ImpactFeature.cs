@@ -3,7 +3,7 @@ using AcDream.Core.Physics.Geometry;
 namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>Which feature of a shape a swept sphere touched first.</summary>
-public enum ImpactFeature : byte
+internal enum ImpactFeature : byte
 {
     /// <summary>No contact.</summary>
     None = 0,

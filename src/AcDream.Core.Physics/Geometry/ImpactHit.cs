@@ -4,7 +4,7 @@ using AcDream.Core.Physics.Geometry;
 namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>The first contact of a swept sphere: when (fraction of the sweep), the contact normal (pointing from the shape to the sphere's centre), and the feature.</summary>
-public readonly struct ImpactHit
+internal readonly struct ImpactHit
 {
     /// <summary>Creates a hit.</summary>
     public ImpactHit(float time, Vector3 normal, ImpactFeature feature)

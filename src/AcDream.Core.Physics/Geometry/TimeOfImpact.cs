@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Geometry;
 /// smallest root of the distance equation |c + t·d − shape| = r; shapes are convex, so a sphere that is
 /// not approaching a shape at t = 0 never reaches it later in the same straight sweep.
 /// </summary>
-public static class TimeOfImpact
+internal static class TimeOfImpact
 {
     /// <summary>
     /// A sphere closer to a shape than its radius plus this slop counts as touching: it is stopped at t = 0
@@ -147,7 +147,7 @@ public static class TimeOfImpact
         Polygon(c, d, r, polygon, Vector3.Zero, out hit);
 
     /// <summary>
-    /// <see cref="Polygon(Vector3, Vector3, float, Geometry.Polygon, out ImpactHit)"/> for a polygon placed
+    /// <see cref="Polygon(Vector3, Vector3, float, Polygon, out ImpactHit)"/> for a polygon placed
     /// <paramref name="shift"/> from the frame of <paramref name="start"/> (a neighbouring landblock's
     /// terrain). A ray's edge test runs in the start's frame, where the shifted corners of terrain are exact, so
     /// it stays watertight across landblock seams (shifting the start instead rounds it differently for each

@@ -11,7 +11,7 @@ namespace AcDream.Core.Physics.Managers;
 /// ConstraintManager). It belongs to the object's <see cref="ObjectMotion"/> (<see cref="ObjectMotion.PositionManager"/>);
 /// each manager is created on its first use, as retail's PositionManager creates them.
 /// <para>
-/// Each quantum of <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in Body.BodyState, ObjectMotion, double)"/>
+/// Each quantum of <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in BodyState, ObjectMotion, double)"/>
 /// the animation's offset passes through the managers in retail's order (adjust_offset: interpolation, then
 /// sticky, then the leash) before the physics and the transition, so a smoothed or stuck object moves through
 /// the transition like any other and never passes through a wall; after the quantum, UseTime runs (the

@@ -177,7 +177,7 @@ internal static class ShapeSweep
     /// <summary>
     /// A cheap test before the exact one: false when the swept sphere stays clear of the polygon's plane
     /// (wholly in front of it, or wholly behind it), or stays behind a single-sided face — the cases in
-    /// which <see cref="TimeOfImpact.Polygon(Vector3, Vector3, float, Geometry.Polygon, out ImpactHit)"/> finds nothing.
+    /// which <see cref="TimeOfImpact.Polygon(Vector3, Vector3, float, Polygon, out ImpactHit)"/> finds nothing.
     /// </summary>
     private static bool MayReach(Polygon polygon, Vector3 a, Vector3 b, float r)
     {

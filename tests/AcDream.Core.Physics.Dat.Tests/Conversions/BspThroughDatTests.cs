@@ -3,6 +3,7 @@ using AcDream.Core.Physics.Dat.Tests.Support;
 using AcDream.Core.Physics.Geometry;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Lib.IO;
+using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Dat.Tests.Conversions;
 
@@ -91,9 +92,9 @@ public class BspThroughDatTests
     {
         var polygons = new[]
         {
-            new Geometry.Polygon([new(0, 0, 0), new(1, 0, 0), new(1, 1, 0), new(0, 1, 0)], PolygonSides.Single),
-            new Geometry.Polygon([new(0, 0, 1), new(0, 1, 1), new(1, 1, 1), new(1, 0, 1)], PolygonSides.Double),
-            new Geometry.Polygon([new(0, 0, 2), new(1, 0, 2), new(1, 1, 2)], PolygonSides.Both),
+            new Polygon([new(0, 0, 0), new(1, 0, 0), new(1, 1, 0), new(0, 1, 0)], PolygonSides.Single),
+            new Polygon([new(0, 0, 1), new(0, 1, 1), new(1, 1, 1), new(1, 0, 1)], PolygonSides.Double),
+            new Polygon([new(0, 0, 2), new(1, 0, 2), new(1, 1, 2)], PolygonSides.Both),
         };
         var tree = BspTree.Create(polygons, [new BspNodeData { IsLeaf = true, Polygons = [2, 0, 1] }], "sides");
 

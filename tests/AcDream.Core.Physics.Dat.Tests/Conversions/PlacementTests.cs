@@ -2,6 +2,7 @@ using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Dat.Tests.Support;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Types;
+using AcDream.Core.Physics.Scenes;
 using DatFrame = DatReaderWriter.Types.Frame;
 
 namespace AcDream.Core.Physics.Dat.Tests.Conversions;

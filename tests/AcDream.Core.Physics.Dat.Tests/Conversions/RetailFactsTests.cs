@@ -1,5 +1,6 @@
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Dat.Tests.Support;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
@@ -45,7 +46,7 @@ public class RetailFactsTests
         var read = files.Get<Setup>(files.Portal, 0x02000108);
         var result = DatSetups.ToPhysicsSetup(read, id => DatModels.ToPhysicsModel(files.Get<GfxObj>(files.Portal, id)));
 
-        Assert.Equal([new Geometry.Sphere(new Vector3(0, -0.1475f, 0.439f), 0.439f)], result.Spheres);
+        Assert.Equal([new Sphere(new Vector3(0, -0.1475f, 0.439f), 0.439f)], result.Spheres);
         Assert.Empty(result.CylSpheres);
         Assert.Equal((0.878f, 0.5269661f, 0.3612f, 0.3612f), (result.Height, result.Radius, result.StepUpHeight, result.StepDownHeight));
         var only = Assert.Single(result.Parts);
@@ -85,7 +86,7 @@ public class RetailFactsTests
             ],
         };
         // The structure's geometry is not stated: a 4 m room whose polygons 12 and 13 are two of its walls.
-        var room = BspShapes.Box(new Vector3(-2, -2, 0), new Vector3(2, 2, 3), Geometry.PolygonSides.Single);
+        var room = BspShapes.Box(new Vector3(-2, -2, 0), new Vector3(2, 2, 3), PolygonSides.Single);
         var vertices = DatObjects.NewVertexArray();
         var structure = new CellStruct { VertexArray = vertices, CellBSP = DatObjects.CellTree(BspShapes.CellBox(new Vector3(-2, -2, 0), new Vector3(2, 2, 3))) };
         structure.PhysicsBSP = DatObjects.PhysicsTree(room, vertices, structure.PhysicsPolygons);

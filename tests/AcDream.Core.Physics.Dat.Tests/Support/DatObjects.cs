@@ -5,7 +5,7 @@ using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 using DatPolygon = DatReaderWriter.Types.Polygon;
 using DatSphere = DatReaderWriter.Types.Sphere;
-using Polygon = AcDream.Core.Physics.Geometry.Polygon;
+using Polygon = AcDream.Core.Physics.Polygon;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 

@@ -3,12 +3,13 @@ using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
+using DatCylSphere = DatReaderWriter.Types.CylSphere;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatFrame = DatReaderWriter.Types.Frame;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
 using DatSphere = DatReaderWriter.Types.Sphere;
-using EnvCell = AcDream.Core.Physics.World.EnvCell;
+using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 
@@ -201,7 +202,7 @@ internal sealed class WorldDat
         return id;
     }
 
-    private static bool SameSphere(Geometry.Sphere a, Geometry.Sphere b) => a.Center.Equals(b.Center) && a.Radius.Equals(b.Radius);
+    private static bool SameSphere(Sphere a, Sphere b) => a.Center.Equals(b.Center) && a.Radius.Equals(b.Radius);
 
     private uint SetupId(PhysicsSetup setup)
     {
@@ -233,7 +234,7 @@ internal sealed class WorldDat
         if (count > 0)
             result.PlacementFrames.Add(Placement.Default, frames);
         foreach (var c in setup.CylSpheres)
-            result.CylSpheres.Add(new CylSphere { Origin = c.LowPoint, Radius = c.Radius, Height = c.Height });
+            result.CylSpheres.Add(new DatCylSphere { Origin = c.LowPoint, Radius = c.Radius, Height = c.Height });
         foreach (var s in setup.Spheres)
             result.Spheres.Add(new DatSphere { Origin = s.Center, Radius = s.Radius });
         Setups.Add(result);

@@ -123,7 +123,7 @@ public class LedgeGrazeTests
     }
 
     /// <summary>
-    /// A body-driven client (<see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>, retail update_object) sees the same: walking at
+    /// A body-driven client (<see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/>, retail update_object) sees the same: walking at
     /// 2 m/s it stops for good at the ledge, standing on walkable ground (no gravity, no fall) while every
     /// step is refused. A jump frees it: the body leaves the contact plane, so the first quantum's leap keeps
     /// only its part along the carried sliding normal's plane (straight up), that accepted transition drops the

@@ -5,7 +5,7 @@ using AcDream.Core.Physics.Tests.Support;
 namespace AcDream.Core.Physics.Tests.Body;
 
 /// <summary>
-/// Retail body motion through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.Body.BodyState, double, System.Numerics.Vector3, float)"/>: falls, jumps, landings, friction, bounces and
+/// Retail body motion through <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in AcDream.Core.Physics.BodyState, double, System.Numerics.Vector3, float)"/>: falls, jumps, landings, friction, bounces and
 /// the quantum rules, each pinned to a number worked out by hand in its comment (g = 9.8 m/s²).
 /// </summary>
 public class BodyMotionTests

@@ -155,7 +155,7 @@ public class BodyRulesTests
     {
         var world = TestGeometry.FlatWorld();
         BodyDriver.AddBox(world, 0x7000_0031, new Vector3(90, 101, 0), new Vector3(110, 102, 3));
-        var ball = new MoverDescription(0x50000007, [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.3f)], 0f, 0f, PhysicsState.Gravity | PhysicsState.Inelastic);
+        var ball = new MoverDescription(0x50000007, [new AcDream.Core.Physics.Sphere(Vector3.Zero, 0.3f)], 0f, 0f, PhysicsState.Gravity | PhysicsState.Inelastic);
         var driver = new BodyDriver(world, ball, MoverState.Airborne(TestGeometry.At(100, 100.65f, 1.5f)), BodyState.Object(new Vector3(0, 3, 0)));
 
         var step = driver.Step(1.0 / 30, Vector3.Zero);

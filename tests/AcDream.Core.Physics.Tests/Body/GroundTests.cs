@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;

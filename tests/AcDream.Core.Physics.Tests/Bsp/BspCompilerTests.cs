@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using static AcDream.Core.Physics.Tests.Bsp.BspTestKit;
 using AcDream.Core.Physics.Bsp;

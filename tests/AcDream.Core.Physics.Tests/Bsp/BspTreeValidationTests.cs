@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;

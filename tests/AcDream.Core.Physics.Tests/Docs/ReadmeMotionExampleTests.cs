@@ -1,4 +1,5 @@
 using System.Numerics;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;

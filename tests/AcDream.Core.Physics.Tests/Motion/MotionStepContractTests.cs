@@ -1,4 +1,5 @@
 using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Motion;
@@ -54,7 +55,7 @@ public class MotionStepContractTests
         var rig = new MotionRig();
         var creature = new ObjectMotion(MotionTables.Humanoid());
         var state = rig.State;
-        var body = AcDream.Core.Physics.Body.BodyState.Creature();
+        var body = AcDream.Core.Physics.BodyState.Creature();
         creature.Place(rig.Mover, state, ref body);
         creature.DoMotion(MotionCommand.WalkForward, new MotionParameters(1f, HoldKey.Run), rig.Mover, ref state, ref body);
         Assert.Equal(MotionCommand.RunForward, creature.Interpreted.ForwardCommand);

@@ -1,6 +1,7 @@
 using System.IO;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Parity;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Parity;
 
 namespace AcDream.Core.Physics.Tests.Motion;

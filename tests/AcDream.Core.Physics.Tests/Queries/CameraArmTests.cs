@@ -95,7 +95,7 @@ public class CameraArmTests
 
         var world = new PhysicsWorld();
         for (uint y = 0xB4; y <= 0xB7; y++)
-            world.Cells.AddLandblock(AcDream.Core.Physics.World.Terrain.Flat(0xA900 | y, 0f));
+            world.Cells.AddLandblock(AcDream.Core.Physics.Terrain.Flat(0xA900 | y, 0f));
         var placed = new WorldQuery(world).CameraArm(At(0xA9B40001, 5, 5, 2), new Vector3(5, 5 + 0.3f * 1200, 2));
         Assert.Equal(CameraPlacement.AtDesired, placed.Placement);
         Assert.Equal(0xA9B50000u, placed.Camera.CellId & 0xFFFF0000u);   // y 365: the next block north (192..384)

@@ -68,7 +68,7 @@ public class CastCullTests
         // More objects in the cast's box than the swept-object set first holds (16): forty balls 0.6 m north
         // of a diagonal ray (0.42 m from the line, radius 0.2: all missed), then one ball on the line.
         var world = TestGeometry.FlatWorld();
-        var ball = new AcDream.Core.Physics.Shapes.PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.2f)] };
+        var ball = new AcDream.Core.Physics.PhysicsSetup { Spheres = [new AcDream.Core.Physics.Sphere(Vector3.Zero, 0.2f)] };
         for (int i = 0; i < 40; i++)
         {
             float x = 90.5f + i * 0.5f;

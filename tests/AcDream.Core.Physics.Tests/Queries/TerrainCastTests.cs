@@ -49,7 +49,7 @@ public class TerrainCastTests
         // ball's bounds: only the cast's radius brings it within reach.
         var world = new PhysicsWorld();
         world.Cells.AddLandblock(Terrain.Flat(0xA9B4, 0f));
-        world.Objects.Register(7, new Physics.Shapes.PhysicsSetup { Spheres = [new Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] }, Position.Outdoor(0xA9B4, new Vector3(100, 100, 1)));
+        world.Objects.Register(7, new Physics.PhysicsSetup { Spheres = [new Physics.Sphere(Vector3.Zero, 0.5f)] }, Position.Outdoor(0xA9B4, new Vector3(100, 100, 1)));
         var q = new WorldQuery(world);
         Assert.True(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(98, 100.7f, 1)), new Vector3(102, 100.7f, 1), 0.3f, out var hit));
         Assert.Equal(7u, hit.ObjectId);
@@ -86,8 +86,8 @@ public class TerrainCastTests
         // sphere falling 0.3 m above the tile, moving west, lands on its front.
         var world = new PhysicsWorld();
         world.Cells.AddLandblock(Terrain.Flat(0xA9B4, -10f));
-        var tile = new Physics.Shapes.PhysicsModel(Physics.Bsp.BspShapes.Floor(Vector3.Zero, new Vector2(2, 2)));
-        world.Objects.Register(9, new Physics.Shapes.PhysicsSetup { Parts = [new Physics.Shapes.SetupPart(tile, Frame.Identity)] }, Position.Outdoor(0xA9B4, new Vector3(100, 100, 1)));
+        var tile = new Physics.PhysicsModel(Physics.Scenes.BspShapes.Floor(Vector3.Zero, new Vector2(2, 2)));
+        world.Objects.Register(9, new Physics.PhysicsSetup { Parts = [new Physics.SetupPart(tile, Frame.Identity)] }, Position.Outdoor(0xA9B4, new Vector3(100, 100, 1)));
         var q = new WorldQuery(world);
         Assert.False(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(101.25f, 100, 0.6f)), new Vector3(101.25f, 100, 1.6f), 0.3f, out var hit), hit.ToString());
         Assert.True(q.SphereCast(Position.Outdoor(0xA9B4, new Vector3(101.5f, 100, 1.3f)), new Vector3(100.5f, 100, 1.27f), 0.3f, out hit));

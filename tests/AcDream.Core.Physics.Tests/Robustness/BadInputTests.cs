@@ -1,5 +1,6 @@
 using System.IO;
 using System.Diagnostics;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Bsp;

@@ -120,7 +120,7 @@ internal static class DeterminismRecord
         // A mover that sticks to an earlier one follows that mover's frames (the scene run so far).
         var earlier = moverIndex == 0 ? null : SceneRunner.Earlier(scene, SceneRunner.Run(scene).Movers, moverIndex);
         var motion = mover.Commands?.Start(mover.Description, state, ref body, earlier);
-        var missile = mover.IsMissile ? new AcDream.Core.Physics.Body.Missile(mover.Description, mover.Start.Position, mover.StartBody) : null;
+        var missile = mover.IsMissile ? new AcDream.Core.Physics.Missile(mover.Description, mover.Start.Position, mover.StartBody) : null;
         for (int f = 0; f < mover.FrameCount; f++)
         {
             MoveResult r;

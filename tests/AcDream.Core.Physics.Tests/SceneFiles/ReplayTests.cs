@@ -202,7 +202,7 @@ public class SceneHotPathTests
         var scene = SceneLibrary.Load(name);
         var engine = new PhysicsEngine(scene.World);
         var inputs = new List<(MoverDescription Mover, MoverState State, Position Target)>();
-        var steps = new List<(MoverDescription Mover, MoverState State, Core.Physics.Body.BodyState Body, SceneStep Step)>();
+        var steps = new List<(MoverDescription Mover, MoverState State, Core.Physics.BodyState Body, SceneStep Step)>();
         foreach (var mover in scene.Movers)
         {
             var state = mover.Start;

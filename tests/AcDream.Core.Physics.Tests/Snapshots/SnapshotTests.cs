@@ -1,4 +1,5 @@
 using System.IO;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
@@ -210,7 +211,7 @@ public class SnapshotTests
     [Fact]
     public void ObjectsRestored_TakeTheirPlacesInEachCellsList_AfterARemovalReorderedIt()
     {
-        var setup = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] };
+        var setup = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Sphere(Vector3.Zero, 0.5f)] };
         var source = TestGeometry.FlatWorld();
         for (uint id = 1; id <= 4; id++)
             source.Objects.Register(id, setup, TestGeometry.At(100 + id, 100, 0.5f));
@@ -231,7 +232,7 @@ public class SnapshotTests
     {
         // Cut after the objects section, the snapshot would load with every object but not its places in the cells'
         // lists (the order a cell's objects are tested in): refused as cut short instead.
-        var setup = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] };
+        var setup = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Sphere(Vector3.Zero, 0.5f)] };
         var source = TestGeometry.FlatWorld();
         for (uint id = 1; id <= 3; id++)
             source.Objects.Register(id, setup, TestGeometry.At(100 + id, 100, 0.5f));
@@ -261,7 +262,7 @@ public class SnapshotTests
                 source.Cells.AddLandblock(Terrain.Flat(bx << 8 | by, 0f));
                 target.Cells.AddLandblock(Terrain.Flat(bx << 8 | by, 0f));
             }
-        var small = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Geometry.Sphere(Vector3.Zero, 0.5f)] };
+        var small = new PhysicsSetup { Spheres = [new AcDream.Core.Physics.Sphere(Vector3.Zero, 0.5f)] };
         var half = new Vector3(150f, 150f, 1f);
         var box = new PhysicsSetup { Parts = [new SetupPart(new PhysicsModel(BspShapes.Box(-half, half)), Frame.Identity)] };
         var corner = new Vector3(44f, 44f, 0.5f); // (236, 236) from the middle landblock's corner, in 0xA9B4's north-east neighbour

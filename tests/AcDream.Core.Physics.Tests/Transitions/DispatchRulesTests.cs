@@ -85,10 +85,10 @@ public class SelfCollisionTests
         // The mover's own cylinder (radius 0.5, height 2) is registered at its start; it walks 1 m away in
         // 0.1 m frames. Tested against itself it would be stuck inside at once; skipped, it ends 1 m along.
         var world = Support.TestGeometry.FlatWorld();
-        var mover = new MoverDescription(0x5000_000D, [new AcDream.Core.Physics.Geometry.Sphere(new Vector3(0, 0, 0.5f), 0.5f)], 0.6f, 0.8f,
+        var mover = new MoverDescription(0x5000_000D, [new AcDream.Core.Physics.Sphere(new Vector3(0, 0, 0.5f), 0.5f)], 0.6f, 0.8f,
             PhysicsState.Gravity, ObjectInfoState.IsPlayer);
         var start = Support.TestGeometry.At(100, 100, 0);
-        world.Objects.Register(mover.ObjectId, new AcDream.Core.Physics.Shapes.PhysicsSetup { CylSpheres = [new AcDream.Core.Physics.Geometry.CylSphere(Vector3.Zero, 0.5f, 2f)] },
+        world.Objects.Register(mover.ObjectId, new AcDream.Core.Physics.PhysicsSetup { CylSpheres = [new AcDream.Core.Physics.CylSphere(Vector3.Zero, 0.5f, 2f)] },
             start, 1f, PhysicsState.Static);
         var walker = new Support.Mover(world, mover, MoverState.OnFloor(start, 0f));
         walker.Walk(new Vector3(0, 0.1f, 0), 10);

@@ -102,8 +102,8 @@ public class ObjectCullTests
         // 0xA9B4's corner), centre 0.5 m up; the player walks east at it from x 190 in 0xA9B4. Its lower
         // sphere (0.48 m at 0.475 m) must stop touching the ball: centres at least 0.98 m apart.
         var world = new PhysicsWorld();
-        world.Cells.AddLandblock(Physics.World.Terrain.Flat(0xA9B4, 0f));
-        world.Cells.AddLandblock(Physics.World.Terrain.Flat(0xAAB4, 0f));
+        world.Cells.AddLandblock(Physics.Terrain.Flat(0xA9B4, 0f));
+        world.Cells.AddLandblock(Physics.Terrain.Flat(0xAAB4, 0f));
         var ballAt = Position.Outdoor(0xAAB4, new Vector3(1, 100, 0.5f));
         world.Objects.Register(7, new PhysicsSetup { Spheres = [new Sphere(Vector3.Zero, 0.5f)] }, ballAt);
         var engine = new PhysicsEngine(world);
@@ -140,7 +140,7 @@ public class ObjectCullTests
         var engine = new PhysicsEngine(world);
         var player = MoverDescription.Player();
         var state = MoverState.OnFloor(TestGeometry.At(100f, 100f, 0f), 0f);
-        var body = AcDream.Core.Physics.Body.BodyState.Creature();
+        var body = AcDream.Core.Physics.BodyState.Creature();
         bool hit = false;
         float top = 0f;
         for (int frame = 0; frame < 30; frame++)

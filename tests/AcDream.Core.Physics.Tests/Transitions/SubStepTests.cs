@@ -88,8 +88,8 @@ public class SubStepTests
     public void AMoveOfExactlyThreeRadii_TakesThreeSubSteps()
     {
         var world = new PhysicsWorld();
-        world.Cells.AddLandblock(AcDream.Core.Physics.World.Terrain.Flat(Support.TestGeometry.Landblock, 0f));
-        var mover = new MoverDescription(0x5000_000C, [new AcDream.Core.Physics.Geometry.Sphere(new Vector3(0, 0, 0.5f), 0.5f)], 0.6f, 0.8f);
+        world.Cells.AddLandblock(AcDream.Core.Physics.Terrain.Flat(Support.TestGeometry.Landblock, 0f));
+        var mover = new MoverDescription(0x5000_000C, [new AcDream.Core.Physics.Sphere(new Vector3(0, 0, 0.5f), 0.5f)], 0.6f, 0.8f);
         var log = new AcDream.Core.Physics.Diagnostics.TransitionEventLog();
         var engine = new PhysicsEngine(world) { Observer = log };
         var start = MoverState.Airborne(Support.TestGeometry.At(100, 100, 10));

@@ -5,6 +5,7 @@ using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tool;
 using AcDream.Core.Physics.Tool.View;
+using AcDream.Core.Physics.Viewer;
 using AcDream.Core.Physics.World;
 using ToolProgram = AcDream.Core.Physics.Tool.Program;
 

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Queries;
@@ -69,7 +70,7 @@ public class LandblockStreamingTests
     {
         var world = TestGeometry.FlatWorld();
         Assert.Throws<ArgumentException>(() => world.LoadLandblock(Terrain.Flat(Lb, 0)));
-        var stray = new EnvCell((Lb << 16) | 0x100, Frame.Identity, null, AcDream.Core.Physics.Bsp.BspShapes.CellBox(Vector3.Zero, Vector3.One));
+        var stray = new EnvCell((Lb << 16) | 0x100, Frame.Identity, null, AcDream.Core.Physics.Scenes.BspShapes.CellBox(Vector3.Zero, Vector3.One));
         var ex = Assert.Throws<ArgumentException>(() => world.LoadLandblock(Terrain.Flat(East, 0), [stray]));
         Assert.StartsWith("envCells[0]", ex.Message);
         Assert.False(world.Cells.HasLandblock(East));
