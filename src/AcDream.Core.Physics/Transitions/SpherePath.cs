@@ -14,6 +14,20 @@ namespace AcDream.Core.Physics.Transitions;
 /// </summary>
 internal sealed class SpherePath
 {
+    /// <summary>A path taking the default shortcuts (<see cref="ShortcutSettings.Default"/>).</summary>
+    public SpherePath() : this(ShortcutSettings.Default) { }
+
+    /// <summary>A path taking <paramref name="shortcuts"/> (its transition's).</summary>
+    public SpherePath(Shortcuts shortcuts)
+    {
+        Shortcuts = shortcuts;
+        _moverMatrix = new(shortcuts);
+        _spaceMatrix = new(shortcuts);
+    }
+
+    /// <summary>The shortcuts this path takes (its transition's).</summary>
+    public readonly Shortcuts Shortcuts;
+
     /// <summary>How many spheres the mover has (1 or 2).</summary>
     public int NumSphere;
     /// <summary>The mover's spheres in its own space, scaled.</summary>
@@ -118,7 +132,7 @@ internal sealed class SpherePath
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool KnownSolidHit(object owner, in Position space, float scale) =>
-        InsertType == InsertType.Placement && SolidHit.Holds(owner, space, scale, CheckPos);
+        InsertType == InsertType.Placement && (Shortcuts & Shortcuts.SolidHitMemo) != 0 && SolidHit.Holds(owner, space, scale, CheckPos);
 
     /// <summary>
     /// Clears the per-move state, ready for a new transition: the flags, cells, walkable and step fields.
@@ -281,7 +295,7 @@ internal sealed class SpherePath
 
     // The mover's orientation changes rarely along a path, and the spaces tested one after another often
     // share one: each keeps the last matrix built.
-    private readonly RotationMatrixMemo _moverMatrix = new(), _spaceMatrix = new();
+    private readonly RotationMatrixMemo _moverMatrix, _spaceMatrix;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)

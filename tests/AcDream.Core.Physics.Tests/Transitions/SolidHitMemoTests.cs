@@ -38,7 +38,7 @@ public class SolidHitMemoTests
     private static void AssertRememberedAndTheRealPlacementTestAgrees(Vector3 from, Vector3 to)
     {
         var tree = BoxFixtures.SolidBox(out _);
-        var t = BoxFixtures.MakeTransition(from, to, 0.5f);
+        var t = BoxFixtures.MakeTransition(from, to, 0.5f, shortcuts: Shortcuts.All);
         var path = t.SpherePath;
         Assert.Equal(TransitionState.Adjusted, BspQuery.FindCollisions(tree, t, 1f, Owner));
         Assert.False(path.KnownSolidHit(Owner, Space, 1f)); // a move's insert is not a placement
@@ -59,14 +59,14 @@ public class SolidHitMemoTests
     public void ContactHit_IsRememberedAtItsCheckPosition_AndTheRealPlacementTestAgrees()
     {
         var tree = BoxFixtures.SolidBox(out _);
-        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         t.ObjectInfo.State |= ObjectInfoState.Contact;
         var path = t.SpherePath;
         var hitAt = path.CheckPos;
         BspQuery.FindCollisions(tree, t, 1f, Owner);
         Assert.True(path.SolidHit.Holds(Owner, Space, 1f, hitAt));
 
-        var placement = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var placement = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         placement.SpherePath.InsertType = InsertType.Placement;
         Assert.Equal(TransitionState.Collided, BspQuery.FindCollisions(tree, placement, 1f));
     }
@@ -75,7 +75,7 @@ public class SolidHitMemoTests
     [Fact]
     public void Miss_IsNotRemembered()
     {
-        var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(2.5f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(2.5f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         Assert.Equal(TransitionState.OK, BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner));
         t.SpherePath.InsertType = InsertType.Placement;
         Assert.False(t.SpherePath.KnownSolidHit(Owner, Space, 1f));
@@ -89,7 +89,7 @@ public class SolidHitMemoTests
     [Fact]
     public void AnswersOnlyForTheSameOwnerSpaceScaleAndCheckPosition()
     {
-        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         var path = t.SpherePath;
         BspQuery.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner);
         path.InsertType = InsertType.Placement;
