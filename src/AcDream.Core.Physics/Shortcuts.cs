@@ -45,6 +45,8 @@ internal enum Shortcuts
     ViewerSteps = 1 << 13,
     /// <summary>A walked camera sub-step's cell search is answered from the proof (<c>Transition.CellAloneAtCheck</c>).</summary>
     ViewerCellSearch = 1 << 14,
+    /// <summary>The mover's points at the current and last check positions are kept while the position's bits stay (<c>SpherePath.PointsAt</c>).</summary>
+    PointsMemo = 1 << 15,
     /// <summary>Every shortcut (the default).</summary>
-    All = (1 << 15) - 1,
+    All = (1 << 16) - 1,
 }

@@ -21,6 +21,7 @@ internal sealed class SpherePath
     public SpherePath(Shortcuts shortcuts)
     {
         Shortcuts = shortcuts;
+        _pointsKept = (shortcuts & Shortcuts.PointsMemo) != 0;
         _moverMatrix = new(shortcuts);
         _spaceMatrix = new(shortcuts);
     }
@@ -385,11 +386,17 @@ internal sealed class SpherePath
 
     // The points at the current position and at the last check position computed.
     private FreshPoints _curFresh, _checkFresh;
+    // False when the shortcut is off: no points are kept, each request computes them.
+    private readonly bool _pointsKept;
 
     /// <summary>
     /// The position's matrix · (local point) + origin, for each point, exactly as
     /// <see cref="Position.LocalToLocal(in RotationMatrix, in Position, in RotationMatrix, Vector3)"/>
     /// computes its first half; recomputed only when the position differs in any bit from the last one.
+    /// Shortcut <see cref="Shortcuts.PointsMemo"/> (not retail). Skips: the transforms of the mover's points at a
+    /// position whose bits were seen last (a move starting where the last ended, an accepted sub-step, each
+    /// object tested from one position). Same result: the same transforms of the same bits. Proof:
+    /// SpherePathSpheresTests, RememberedWorkTests, and the suite with shortcuts off.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private ref readonly PointLanes PointsAt(in Position position, ref FreshPoints fresh)
@@ -403,7 +410,7 @@ internal sealed class SpherePath
     {
         fresh.Points = _moverMatrix.LanesOf(position.Frame).PositionToGlobal(_localPoints, position.Frame.Origin);
         fresh.For = position;
-        fresh.Valid = true;
+        fresh.Valid = _pointsKept;
     }
 
     /// <summary>True when the remembered walkable polygon still holds the mover (or there is none).</summary>
