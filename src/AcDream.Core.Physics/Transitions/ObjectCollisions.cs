@@ -88,6 +88,8 @@ internal static class ObjectCollisions
             return FindInEveryObject(transition, cellId);
         // The cull keeps each candidate's rows, so a cell already listed is walked without reading the registry.
         var candidates = transition.Cull.CandidateRows(transition, cellId, out var reach);
+        if (candidates.Length == 0 && observer is null)
+            return TransitionState.OK;
         // For the observer only: the candidates' places in the cell, to report the objects between them.
         var places = observer is null ? default : transition.Cull.Candidates(transition, cellId);
         int reported = 0;
