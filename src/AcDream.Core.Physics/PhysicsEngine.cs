@@ -22,6 +22,9 @@ public sealed partial class PhysicsEngine
     /// <summary>Creates an engine over a world.</summary>
     public PhysicsEngine(PhysicsWorld world) => _transition = new Transition(world);
 
+    /// <summary>Creates an engine taking <paramref name="shortcuts"/> (<see cref="Shortcuts.None"/>: retail's path step for step).</summary>
+    internal PhysicsEngine(PhysicsWorld world, Shortcuts shortcuts) => _transition = new Transition(world, shortcuts);
+
     /// <summary>The world.</summary>
     public PhysicsWorld World => _transition.World;
 
@@ -116,7 +119,9 @@ public sealed partial class PhysicsEngine
         var t = _transition;
         if (t.RefusesBeforeFirstStep(mover, state, begin, target, out var plan))
         {
-            _lastRefusal.Remember(mover, state, target, _transition.World.Cells.RemovalCount);
+            // Shortcut RefusalMemo: see RefusalMemo's header (off: nothing is remembered, nothing matches).
+            if ((t.Shortcuts & Shortcuts.RefusalMemo) != 0)
+                _lastRefusal.Remember(mover, state, target, _transition.World.Cells.RemovalCount);
             return false;
         }
         refused = false;
@@ -124,7 +129,8 @@ public sealed partial class PhysicsEngine
         t.SpherePath.InitSphere(mover);
         t.SpherePath.InitPath(cell, in begin, in target);
         t.CollisionInfo.FramesStationaryFall = framesStationaryFall;
-        bool ok = t.FindTransitionalPosition(in plan);
+        // Shortcut StepPlan: see StepPlan's header (off: the step count is worked out again from the path).
+        bool ok = (t.Shortcuts & Shortcuts.StepPlan) != 0 ? t.FindTransitionalPosition(in plan) : t.FindTransitionalPosition();
         if (ok) _acceptedTransitions++;
         return ok;
     }

@@ -26,8 +26,23 @@ public enum SkipReason : byte
 }
 
 /// <summary>
+/// Work the engine passed over where it proved retail's walk would change nothing (not retail; the result is
+/// the walk's, bit for bit): what <see cref="ITransitionObserver.OnShortcutSkip"/> counts.
+/// </summary>
+public enum ShortcutSkip : byte
+{
+    /// <summary>The camera's leading sub-steps proven to touch nothing (each is also reported as a sub-step).</summary>
+    ViewerSubSteps = 0,
+    /// <summary>A walked camera sub-step's cell search, answered from the same proof.</summary>
+    ViewerCellSearches = 1,
+}
+
+/// <summary>
 /// Structured diagnostics of a transition. Set <see cref="Transition.Observer"/> to receive them; with no
 /// observer (the default) nothing is built and nothing allocates. Callbacks run on the transition's thread.
+/// The observer watches the path the engine runs without it: the same shortcuts are taken, and what they
+/// leave untested is reported (objects out of reach as <see cref="SkipReason.OutOfReach"/>, the rest through
+/// <see cref="OnShortcutSkip"/>).
 /// </summary>
 public interface ITransitionObserver
 {
@@ -43,4 +58,6 @@ public interface ITransitionObserver
     void OnCellChanged(uint fromCell, uint toCell);
     /// <summary>A step up was tried against an obstacle with this normal.</summary>
     void OnStepUp(Vector3 normal, bool succeeded);
+    /// <summary>A shortcut passed over <paramref name="count"/> pieces of work of the kind <paramref name="what"/> (does nothing unless implemented).</summary>
+    void OnShortcutSkip(ShortcutSkip what, int count) { }
 }

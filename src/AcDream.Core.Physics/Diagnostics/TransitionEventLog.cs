@@ -19,6 +19,8 @@ public enum TransitionEventKind : byte
     CellChanged,
     /// <summary>A step up was tried.</summary>
     StepUp,
+    /// <summary>A shortcut passed over work (<see cref="TransitionEvent.Shortcut"/>; how much in <see cref="TransitionEvent.Index"/>).</summary>
+    ShortcutSkip,
 }
 
 /// <summary>One diagnostics event; fields not used by its kind are zero.</summary>
@@ -33,7 +35,8 @@ public readonly record struct TransitionEvent(
     Vector3 Vector2 = default,
     uint FromCell = 0,
     uint ToCell = 0,
-    bool Succeeded = false);
+    bool Succeeded = false,
+    ShortcutSkip Shortcut = ShortcutSkip.ViewerSubSteps);
 
 /// <summary>An observer that records every event in order, for tests, tools and logs. Allocates; diagnostics only.</summary>
 public sealed class TransitionEventLog : ITransitionObserver
@@ -69,4 +72,8 @@ public sealed class TransitionEventLog : ITransitionObserver
     /// <inheritdoc />
     public void OnStepUp(Vector3 normal, bool succeeded) =>
         _events.Add(new(TransitionEventKind.StepUp, Vector: normal, Succeeded: succeeded));
+
+    /// <inheritdoc />
+    public void OnShortcutSkip(ShortcutSkip what, int count) =>
+        _events.Add(new(TransitionEventKind.ShortcutSkip, Index: count, Shortcut: what));
 }

@@ -46,10 +46,16 @@ public sealed class WorldQuery
     private int _landCount;
 
     /// <summary>Creates a query object over a world.</summary>
-    public WorldQuery(PhysicsWorld world)
+    public WorldQuery(PhysicsWorld world) : this(world, ShortcutSettings.Default) { }
+
+    /// <summary>
+    /// Creates a query object whose camera arm takes <paramref name="shortcuts"/> (<see cref="Shortcuts.None"/>:
+    /// every sub-step walked, as retail) and reports to <paramref name="observer"/>.
+    /// </summary>
+    internal WorldQuery(PhysicsWorld world, Shortcuts shortcuts, Diagnostics.ITransitionObserver? observer = null)
     {
         World = world ?? throw new ArgumentNullException(nameof(world));
-        _viewer = new PhysicsEngine(world);
+        _viewer = new PhysicsEngine(world, shortcuts) { Observer = observer };
     }
 
     /// <summary>The world asked.</summary>
@@ -176,22 +182,6 @@ public sealed class WorldQuery
             return new CameraArmResult(placed, CameraPlacement.AtDesired, false, Vector3.Zero);
         return new CameraArmResult(pivot, CameraPlacement.AtPivot, false, Vector3.Zero);
     }
-
-    /// <summary>
-    /// The camera arm walks every sub-step, as retail does, instead of passing over the stretch its viewer
-    /// transition proves touches nothing (the same answers, bit for bit; for the tests that compare the two).
-    /// </summary>
-    internal bool WalkEverySubStep
-    {
-        get => _viewer.Transition.WalkEveryViewerStep;
-        set => _viewer.Transition.WalkEveryViewerStep = value;
-    }
-
-    /// <summary>How many sub-steps the last camera arm passed over without walking them (for tests).</summary>
-    internal int PassedSubSteps => _viewer.Transition.PassedViewerSteps;
-
-    /// <summary>How many cell searches the last arm's walked sub-steps passed over (for tests).</summary>
-    internal int PassedCellSearches => _viewer.Transition.PassedViewerCellSearches;
 
     /// <summary>Queries read only a position's origin and cell (the camera also its rotation); the cell must be in the world.</summary>
     private void CheckPosition(in Position position, string originField, string cellField)

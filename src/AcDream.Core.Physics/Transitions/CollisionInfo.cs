@@ -9,6 +9,12 @@ namespace AcDream.Core.Physics.Transitions;
 /// </summary>
 internal sealed class CollisionInfo
 {
+    /// <summary>A record taking the default shortcuts (<see cref="ShortcutSettings.Default"/>).</summary>
+    public CollisionInfo() : this(ShortcutSettings.Default) { }
+
+    /// <summary>A record taking <paramref name="shortcuts"/> (its transition's): only <see cref="Shortcuts.UnitMemo"/> applies.</summary>
+    public CollisionInfo(Shortcuts shortcuts) => _slidingUnit = _collisionUnit = UnitMemo.For(shortcuts);
+
     /// <summary>The last contact plane is known (carried between frames).</summary>
     public bool LastKnownContactPlaneValid;
     /// <summary>The last contact plane.</summary>

@@ -73,74 +73,96 @@ internal static class ObjectCollisions
     /// <summary>
     /// Collides with every object listed in a cell, in list order (retail CObjCell::find_obj_collisions
     /// walks its shadow objects forwards; ACE walks backwards); the mover itself is skipped and the first
-    /// non-OK result returns. An initial placement tests no object.
+    /// non-OK result returns. An initial placement tests no object. An observer watches this very path: it is
+    /// told of every object the shortcuts leave untested as skipped (<see cref="SkipReason.OutOfReach"/>), in the
+    /// cell's order among the objects tested.
     /// </summary>
     internal static TransitionState FindInCell(Transition transition, uint cellId)
     {
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             return TransitionState.OK;
-        if (transition.Observer is { } observer)
-            return FindInCellObserved(transition, cellId, observer);
-        // Only the objects the check spheres can reach are tested, in the cell's order; for the others every
-        // retail test would return OK and change nothing (see ObjectCull). The cull keeps each candidate's
-        // rows, so a cell already listed is walked without reading the registry (a cell with no candidate
-        // ends here).
+        var observer = transition.Observer;
+        // Shortcut ObjectCull (not retail). Skips: the objects of the cell whose reach box misses a region
+        // around the check spheres (see ObjectCull). Same result: for each, every retail test returns OK and
+        // changes nothing. Proof: ObjectCullTests, CrowdObjectPassTests, and the suite with shortcuts off.
+        if ((transition.Shortcuts & Shortcuts.ObjectCull) == 0)
+            return FindInEveryObject(transition, cellId);
+        // The cull keeps each candidate's rows, so a cell already listed is walked without reading the registry.
         var candidates = transition.Cull.CandidateRows(transition, cellId, out var reach);
-        if (candidates.Length == 0)
+        if (candidates.Length == 0 && observer is null)
             return TransitionState.OK;
-        // The cull's region is wide (the rest of the move, a step): in a crowd it holds tens of creatures, and
-        // most lie beyond the check spheres themselves. Each candidate's reach box is therefore tested against
-        // the check spheres' own box first, by the very rule the region is made with, so a candidate it leaves
-        // out is one whose retail tests return OK and change nothing. The box is taken again after every
-        // object actually tested (a step-up from one object moves the check spheres for the next).
+        // For the observer only: the candidates' places in the cell, to report the objects between them.
+        var places = observer is null ? default : transition.Cull.Candidates(transition, cellId);
+        int reported = 0;
+        // Shortcut ReachBoxPreCheck (not retail). Skips: a candidate whose reach box misses the check spheres'
+        // own box, by the very rule the cull's region is made with (in a crowd the region holds tens of
+        // creatures, most beyond the spheres themselves). Same result: its retail tests return OK and change
+        // nothing. The box is taken again after every object actually tested (a step-up from one object moves
+        // the check spheres for the next). Proof: CrowdObjectPassTests, and the suite with shortcuts off.
+        bool preCheck = (transition.Shortcuts & Shortcuts.ReachBoxPreCheck) != 0;
         var path = transition.SpherePath;
         bool boxValid = false;
         Vector3 min = default, max = default;
         for (int i = 0; i < candidates.Length; i++)
         {
-            if (!boxValid)
+            if (observer is not null)
             {
-                ObjectCull.SpheresBox(path, out min, out max);
-                var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
-                min += toCell;
-                max += toCell;
-                boxValid = true;
+                ReportOutOfReach(transition, cellId, observer, reported, places[i]);
+                reported = places[i] + 1;
             }
-            if (!reach[i].Meets(min, max))
-                continue;
+            if (preCheck)
+            {
+                if (!boxValid)
+                {
+                    ObjectCull.SpheresBox(path, out min, out max);
+                    var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
+                    min += toCell;
+                    max += toCell;
+                    boxValid = true;
+                }
+                if (!reach[i].Meets(min, max))
+                {
+                    if (observer is not null)
+                        NotifySkippedUnlessSelf(transition, observer, candidates[i]);
+                    continue;
+                }
+            }
             var state = FindObjectCollisionsUnlessSelf(transition, candidates[i]);
             if (state != TransitionState.OK)
                 return state;
             boxValid = false;
         }
+        if (observer is not null)
+            ReportOutOfReach(transition, cellId, observer, reported, int.MaxValue);
         return TransitionState.OK;
     }
 
-    /// <summary>As <see cref="FindInCell"/>, reporting the objects out of reach as skipped (<see cref="SkipReason.OutOfReach"/>).</summary>
-    private static TransitionState FindInCellObserved(Transition transition, uint cellId, ITransitionObserver observer)
+    /// <summary><see cref="FindInCell"/> without the cull: every object of the cell, in its order, as retail.</summary>
+    private static TransitionState FindInEveryObject(Transition transition, uint cellId)
     {
         var objects = transition.World.Objects.ObjectsInCell(cellId);
-        if (objects.Count == 0)
-            return TransitionState.OK;
-        var candidates = transition.Cull.Candidates(transition, cellId);
-        uint self = transition.ObjectInfo.ObjectId;
-        int next = 0;
         for (int i = 0; i < objects.Count; i++)
         {
-            var rows = objects.RowsOf(i);
-            if (next < candidates.Length && candidates[next] == i)
-            {
-                next++;
-                var state = FindObjectCollisionsUnlessSelf(transition, rows);
-                if (state != TransitionState.OK)
-                    return state;
-            }
-            else if (rows.Length > 0 && (rows[0].EntityId != self || self == 0))
-            {
-                NotifySkipped(observer, rows, SkipReason.OutOfReach);
-            }
+            var state = FindObjectCollisionsUnlessSelf(transition, objects.RowsOf(i));
+            if (state != TransitionState.OK)
+                return state;
         }
         return TransitionState.OK;
+    }
+
+    /// <summary>Tells the observer the objects of the cell from place <paramref name="from"/> up to (not including) <paramref name="to"/> were left out of reach.</summary>
+    private static void ReportOutOfReach(Transition transition, uint cellId, ITransitionObserver observer, int from, int to)
+    {
+        var objects = transition.World.Objects.ObjectsInCell(cellId);
+        for (int i = from; i < objects.Count && i < to; i++)
+            NotifySkippedUnlessSelf(transition, observer, objects.RowsOf(i));
+    }
+
+    private static void NotifySkippedUnlessSelf(Transition transition, ITransitionObserver observer, ReadOnlySpan<ShadowEntry> rows)
+    {
+        uint self = transition.ObjectInfo.ObjectId;
+        if (rows.Length > 0 && (rows[0].EntityId != self || self == 0))
+            NotifySkipped(observer, rows, SkipReason.OutOfReach);
     }
 
     private static TransitionState FindObjectCollisionsUnlessSelf(Transition transition, ReadOnlySpan<ShadowEntry> shapes)
@@ -229,14 +251,23 @@ internal static class ObjectCollisions
         switch (row.Kind)
         {
             case ShadowShapeKind.Bsp:
-                if (!PartCollision.MayTouchPolygons(path, row))
+                // Shortcut PolygonBoxPreCheck (not retail). Skips: a part whose polygons' box no check sphere
+                // reaches, in a move's insert. Same result: every branch of the query needs a polygon within a
+                // sphere's radius before it changes anything (see PartCollision.MayTouchPolygons). Proof:
+                // PolygonBoxTests, and the suite with shortcuts off.
+                if ((transition.Shortcuts & Shortcuts.PolygonBoxPreCheck) != 0 && !PartCollision.MayTouchPolygons(path, row))
                     return TransitionState.OK;
                 return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
                 // Retail quirk: only the low point follows the object's frame; the axis stays world Z. Retail
-                // first sets the path's local space to the object (cache_localspace_sphere(p, 1.0)); of that only
-                // the placement is ever read after a cylinder test (see CacheLocalSpaceForCylinder).
-                path.CacheLocalSpaceForCylinder(row.Position);
+                // first sets the path's local space to the object (cache_localspace_sphere(p, 1.0)).
+                // Shortcut CylinderLocalSpace (not retail). Skips: the local-space spheres, centre and up vector
+                // of that call. Same result: of them only the placement is ever read after a cylinder test (see
+                // CacheLocalSpaceForCylinder). Proof: CrowdObjectPassTests, and the suite with shortcuts off.
+                if ((transition.Shortcuts & Shortcuts.CylinderLocalSpace) != 0)
+                    path.CacheLocalSpaceForCylinder(row.Position);
+                else
+                    path.CacheLocalSpaceSphere(row.Position, 1f);
                 var cyl = shape.Cylinder;
                 cyl.LowPoint = row.PlacedPoint + LandDefs.BlockOffset(path.CheckPos.CellId, row.Position.CellId);
                 return CylSphereResponses.IntersectsSphere(cyl, transition);

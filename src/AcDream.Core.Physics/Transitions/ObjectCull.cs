@@ -20,6 +20,12 @@ namespace AcDream.Core.Physics.Transitions;
 /// follows the objects near its path instead of every object in its cells.
 /// Reused without allocation once its buffers have grown.
 /// </summary>
+/// <remarks>
+/// Shortcut <see cref="Shortcuts.ObjectCull"/> (not retail; taken in <see cref="ObjectCollisions.FindInCell"/>).
+/// Skips: the objects of a cell whose reach box misses the region. Same result: each lies beyond reach of every
+/// check sphere, where retail's tests return OK and change nothing (above). Proof: ObjectCullTests,
+/// CrowdObjectPassTests, and the suite with shortcuts off.
+/// </remarks>
 internal sealed class ObjectCull
 {
     // Cells listed so far in this transition: id, and where its candidates are in _candidates.
@@ -102,7 +108,7 @@ internal sealed class ObjectCull
         for (int i = 0; i < _cells; i++)
             if (_cellIds[i] == cellId)
                 return i;
-        return List(cellId, objects.ObjectsInCell(cellId));
+        return List(cellId, objects.ObjectsInCell(cellId), (transition.Shortcuts & Shortcuts.CellObjectIndex) != 0);
     }
 
     /// <summary>The check spheres' box, in the landblock space of the check cell.</summary>
@@ -228,7 +234,7 @@ internal sealed class ObjectCull
         return index;
     }
 
-    private int List(uint cellId, in ShadowObjectRegistry.CellObjects objects)
+    private int List(uint cellId, in ShadowObjectRegistry.CellObjects objects, bool indexed)
     {
         if (_cells == _cellIds.Length)
         {
@@ -241,7 +247,7 @@ internal sealed class ObjectCull
         var max = _max + toCell;
         int start = _used;
         var slots = objects.Slots;
-        if (slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X) && float.IsFinite(max.X))
+        if (indexed && slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X) && float.IsFinite(max.X))
         {
             // A crowded cell: only the objects its index names are tested, in the cell's order (see CellObjectIndex).
             var index = IndexOf(cellId, slots);

@@ -16,6 +16,12 @@ namespace AcDream.Core.Physics.Transitions;
 /// is unloaded the request is checked again), and no object or cell geometry is consulted before the
 /// first sub-step.
 /// </summary>
+/// <remarks>
+/// Shortcut <see cref="Shortcuts.RefusalMemo"/> (not retail; taken in <c>PhysicsEngine.Move</c>). Skips: checking
+/// and refusing again a request bit for bit the same as the last one refused. Same result: the refusal is a
+/// function of the request alone (above). Proof: RefusedMoveTests (each way the request can differ), and the
+/// suite with shortcuts off.
+/// </remarks>
 internal struct RefusalMemo
 {
     private bool _valid;

@@ -10,8 +10,15 @@ namespace AcDream.Core.Physics.Transitions;
 /// sub-step per frame, asks for the same inputs frame after frame, and the result is a pure function of
 /// their bits.
 /// </summary>
-internal sealed class RotationInterpolationMemo
+/// <remarks>
+/// Shortcut <see cref="Shortcuts.RotationInterpolationMemo"/> (not retail). Skips: interpolating and
+/// normalizing again for the same begin and end orientation bits and fraction. Same result: a pure function of
+/// those bits. Proof: RememberedWorkTests.AMoverTurningAsItMoves_EndsFacingTheTarget, and the suite with shortcuts off.
+/// </remarks>
+internal sealed class RotationInterpolationMemo(Shortcuts shortcuts)
 {
+    // False when the shortcut is off: every request interpolates again.
+    private readonly bool _on = (shortcuts & Shortcuts.RotationInterpolationMemo) != 0;
     private Vector128<int> _from, _to;
     private float _t;
     private Quaternion _result;
@@ -32,7 +39,7 @@ internal sealed class RotationInterpolationMemo
             _from = fromKey;
             _to = toKey;
             _t = t;
-            _valid = true;
+            _valid = _on;
         }
         result = _result;
         return _resultIsValid;

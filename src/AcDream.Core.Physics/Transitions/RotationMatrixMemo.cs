@@ -11,8 +11,15 @@ namespace AcDream.Core.Physics.Transitions;
 /// matrix without the arithmetic. Along one transition the mover's orientation rarely changes, and the
 /// cells and objects tested one after another often share theirs.
 /// </summary>
-internal sealed class RotationMatrixMemo
+/// <remarks>
+/// Shortcut <see cref="Shortcuts.RotationMatrixMemo"/> (not retail). Skips: building the matrix again for the
+/// same orientation bits. Same result: the matrix is a pure function of the quaternion's bits. Proof:
+/// SpherePathSpheresTests, and the suite with shortcuts off.
+/// </remarks>
+internal sealed class RotationMatrixMemo(Shortcuts shortcuts)
 {
+    // False when the shortcut is off: every request builds the matrix (and the up vector) again.
+    private readonly bool _on = (shortcuts & Shortcuts.RotationMatrixMemo) != 0;
     private Vector128<int> _for;
     private RotationMatrix _matrix;
     private bool _valid;
@@ -34,7 +41,7 @@ internal sealed class RotationMatrixMemo
     {
         _matrix = frame.Matrix;
         _for = frame.OrientationKey;
-        _valid = true;
+        _valid = _on;
         _upValid = false;
         _lanes = new RotationMatrixLanes(_matrix);
     }
@@ -52,7 +59,7 @@ internal sealed class RotationMatrixMemo
         if (!_upValid)
         {
             _up = _matrix.PositionToLocal(Vector3.UnitZ);
-            _upValid = true;
+            _upValid = _on;
         }
         return _up;
     }

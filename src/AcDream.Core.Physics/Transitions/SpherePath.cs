@@ -14,6 +14,21 @@ namespace AcDream.Core.Physics.Transitions;
 /// </summary>
 internal sealed class SpherePath
 {
+    /// <summary>A path taking the default shortcuts (<see cref="ShortcutSettings.Default"/>).</summary>
+    public SpherePath() : this(ShortcutSettings.Default) { }
+
+    /// <summary>A path taking <paramref name="shortcuts"/> (its transition's).</summary>
+    public SpherePath(Shortcuts shortcuts)
+    {
+        Shortcuts = shortcuts;
+        _pointsKept = (shortcuts & Shortcuts.PointsMemo) != 0;
+        _moverMatrix = new(shortcuts);
+        _spaceMatrix = new(shortcuts);
+    }
+
+    /// <summary>The shortcuts this path takes (its transition's).</summary>
+    public readonly Shortcuts Shortcuts;
+
     /// <summary>How many spheres the mover has (1 or 2).</summary>
     public int NumSphere;
     /// <summary>The mover's spheres in its own space, scaled.</summary>
@@ -118,7 +133,7 @@ internal sealed class SpherePath
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public bool KnownSolidHit(object owner, in Position space, float scale) =>
-        InsertType == InsertType.Placement && SolidHit.Holds(owner, space, scale, CheckPos);
+        InsertType == InsertType.Placement && (Shortcuts & Shortcuts.SolidHitMemo) != 0 && SolidHit.Holds(owner, space, scale, CheckPos);
 
     /// <summary>
     /// Clears the per-move state, ready for a new transition: the flags, cells, walkable and step fields.
@@ -281,7 +296,7 @@ internal sealed class SpherePath
 
     // The mover's orientation changes rarely along a path, and the spaces tested one after another often
     // share one: each keeps the last matrix built.
-    private readonly RotationMatrixMemo _moverMatrix = new(), _spaceMatrix = new();
+    private readonly RotationMatrixMemo _moverMatrix, _spaceMatrix;
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void ShiftGlobalSpheres(Vector3 offset)
@@ -371,11 +386,17 @@ internal sealed class SpherePath
 
     // The points at the current position and at the last check position computed.
     private FreshPoints _curFresh, _checkFresh;
+    // False when the shortcut is off: no points are kept, each request computes them.
+    private readonly bool _pointsKept;
 
     /// <summary>
     /// The position's matrix · (local point) + origin, for each point, exactly as
     /// <see cref="Position.LocalToLocal(in RotationMatrix, in Position, in RotationMatrix, Vector3)"/>
     /// computes its first half; recomputed only when the position differs in any bit from the last one.
+    /// Shortcut <see cref="Shortcuts.PointsMemo"/> (not retail). Skips: the transforms of the mover's points at a
+    /// position whose bits were seen last (a move starting where the last ended, an accepted sub-step, each
+    /// object tested from one position). Same result: the same transforms of the same bits. Proof:
+    /// SpherePathSpheresTests, RememberedWorkTests, and the suite with shortcuts off.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private ref readonly PointLanes PointsAt(in Position position, ref FreshPoints fresh)
@@ -389,7 +410,7 @@ internal sealed class SpherePath
     {
         fresh.Points = _moverMatrix.LanesOf(position.Frame).PositionToGlobal(_localPoints, position.Frame.Origin);
         fresh.For = position;
-        fresh.Valid = true;
+        fresh.Valid = _pointsKept;
     }
 
     /// <summary>True when the remembered walkable polygon still holds the mover (or there is none).</summary>

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 
@@ -8,16 +9,10 @@ namespace AcDream.Core.Physics.Transitions;
 internal sealed partial class Transition
 {
     /// <summary>
-    /// Walk every sub-step of a viewer transition, as retail does, instead of passing over the ones
-    /// <see cref="ViewerClearance"/> proves touch nothing. For tests, which compare the two bit for bit.
-    /// </summary>
-    internal bool WalkEveryViewerStep { get; set; }
-
-    /// <summary>How many sub-steps the last viewer transition passed over (for tests: that the skip happens at all).</summary>
-    internal int PassedViewerSteps { get; private set; }
-
-    /// <summary>
-    /// The camera arm's shortcut (not retail; changes no result): most of a viewer's sub-steps touch nothing.
+    /// Shortcut <see cref="Shortcuts.ViewerSteps"/> (not retail). Skips: the camera's leading sub-steps proven to
+    /// touch nothing. Same result: such a sub-step's only effect is the check position moving by it (below).
+    /// Proof: CameraArmSkipTests, RealCellCameraArmTests, and the suite with shortcuts off.
+    /// The camera arm's shortcut: most of a viewer's sub-steps touch nothing.
     /// Such a sub-step, from a path with no contact plane, sliding normal, collision normal or contact (the
     /// camera's start), offsets the check position by the unconstrained sub-step (adjust_offset changes
     /// nothing), inserts it into its cell, finds nothing, keeps the cell (find_cell_list lists only it and
@@ -25,18 +20,18 @@ internal sealed partial class Transition
     /// sub-steps of a path starting in an indoor cell, or an outdoor one without a building, are proven so (<see cref="ViewerClearance"/>), this
     /// makes the very same sums of the very same sub-step and leaves the path, the cell list and the
     /// contacts as the walk would; the sub-steps from the first one that may touch something (and always
-    /// the shorter last one) are walked. Nothing is skipped when unsure, when an observer watches, or when
-    /// <see cref="WalkEveryViewerStep"/> is set.
+    /// the shorter last one) are walked. Nothing is skipped when unsure or when the shortcut is off. An observer
+    /// is told each passed sub-step as the walk would tell it (<see cref="ITransitionObserver.OnSubStep"/>), then
+    /// how many were passed over (<see cref="ITransitionObserver.OnShortcutSkip"/>).
     /// </summary>
     /// <returns>How many sub-steps were passed over (0 to the plan's step count − 1).</returns>
     private int PassClearViewerSteps(in StepPlan plan)
     {
-        PassedViewerSteps = 0;
-        PassedViewerCellSearches = 0;
         var path = SpherePath;
         var ci = CollisionInfo;
         int numSteps = plan.NumSteps;
-        if (WalkEveryViewerStep || Observer is not null || numSteps < 2 || plan.FirstKnown
+        // The proof serves both camera shortcuts: it runs when either is on.
+        if ((Shortcuts & (Shortcuts.ViewerSteps | Shortcuts.ViewerCellSearch)) == 0 || numSteps < 2 || plan.FirstKnown
             || path.InsertType != InsertType.Transition || path.NumSphere != 1
             || (ObjectInfo.State & (ObjectInfoState.FreeRotate | ObjectInfoState.Contact | ObjectInfoState.OnWalkable)) != ObjectInfoState.FreeRotate
             || ci.ContactPlaneValid || ci.SlidingNormalValid || ci.CollisionNormalValid || ci.LastKnownContactPlaneValid
@@ -69,6 +64,8 @@ internal sealed partial class Transition
             (_aloneCell, _aloneFrom, _aloneAlong, _aloneLength2, _aloneBefore, _aloneRadius)
                 = (cell, start, along, Vector3.Dot(along, along), MathF.Min(cellAlone, 1f), radius);
         }
+        if ((Shortcuts & Shortcuts.ViewerSteps) == 0)
+            return 0;
         // Sub-step i ends at the fraction i / (numSteps − 1) of the segment: pass those strictly before the first doubt.
         int count = float.IsPositiveInfinity(clear) ? most : Math.Min(most, (int)Math.Ceiling((double)clear * (numSteps - 1)) - 1);
         if (count <= 0)
@@ -90,6 +87,7 @@ internal sealed partial class Transition
                 var next = origin + perStep + relabel;
                 if (!land.ContainsPoint(next))
                     break;
+                Observer?.OnSubStep(held, origin, perStep);
                 origin = next;
                 held++;
             }
@@ -100,7 +98,10 @@ internal sealed partial class Transition
         else
         {
             for (int i = 0; i < count; i++)
+            {
+                Observer?.OnSubStep(i, origin, perStep);
                 origin += perStep;
+            }
         }
         // The check spheres are not computed for the moved check position here: accepting it (below) computes
         // the current ones and copies them, as after a walked sub-step (the spheres' caches compare bits).
@@ -110,7 +111,7 @@ internal sealed partial class Transition
         CellArray.Add(cell);
         path.HitsInteriorCell = land is null;
         SetCurrentCheckPos();
-        PassedViewerSteps = count;
+        Observer?.OnShortcutSkip(ShortcutSkip.ViewerSubSteps, count);
         return count;
     }
 
@@ -121,24 +122,25 @@ internal sealed partial class Transition
     private Vector3 _aloneFrom, _aloneAlong;
     private float _aloneLength2, _aloneBefore, _aloneRadius;
 
-    /// <summary>How many cell searches the last viewer transition's walked sub-steps passed over (for tests).</summary>
-    internal int PassedViewerCellSearches { get; private set; }
-
     /// <summary>
-    /// The walked sub-steps' cell search, passed over where the proof holds (not retail; changes no result).
+    /// Shortcut <see cref="Shortcuts.ViewerCellSearch"/> (not retail). Skips: a walked camera sub-step's cell
+    /// search where the proof holds. Same result: retail's search would list the proven cell alone and find the
+    /// centre in it (below). Proof: CameraArmSkipTests, RealCellCameraArmTests, and the suite with shortcuts off.
+    /// The walked sub-steps' cell search, passed over where the proof holds.
     /// When the check sphere (one sphere, the proven radius, in the proven cell) lies within
     /// <see cref="ViewerClearance.DriftBudget"/> of a point of the proven stretch, retail find_cell_list would
     /// list only the cell (no portal to the outside within reach, every neighbour outside), mark the path as
     /// hitting an interior cell, and find the centre in the cell: that is what this does. The proof's margin
     /// (<see cref="ViewerClearance.Margin"/>, 1 cm) covers the 4 mm and the rounding of the test itself.
     /// </summary>
+    /// An observer is told of each search passed over (<see cref="ITransitionObserver.OnShortcutSkip"/>).
     /// <returns>False when unsure: the caller searches as retail does.</returns>
     private bool CellAloneAtCheck(bool findContaining, out Cell? holder)
     {
         holder = null;
         var path = SpherePath;
         var cell = _aloneCell;
-        if (cell is null || WalkEveryViewerStep || Observer is not null || !IsViewer
+        if (cell is null || (Shortcuts & Shortcuts.ViewerCellSearch) == 0 || !IsViewer
             || path.InsertType != InsertType.Transition || path.NumSphere != 1 || !(_aloneLength2 > 0f)
             || path.CheckPos.CellId != cell.Id)
             return false;
@@ -154,7 +156,7 @@ internal sealed partial class Transition
         CellArray.Clear();
         CellArray.Add(cell);
         path.HitsInteriorCell = true;
-        PassedViewerCellSearches++;
+        Observer?.OnShortcutSkip(ShortcutSkip.ViewerCellSearches, 1);
         if (findContaining)
             holder = cell;
         return true;

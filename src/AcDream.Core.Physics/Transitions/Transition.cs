@@ -19,16 +19,29 @@ internal sealed partial class Transition
     /// <summary>The mover.</summary>
     public readonly ObjectInfo ObjectInfo = new();
     /// <summary>The path.</summary>
-    public readonly SpherePath SpherePath = new();
+    public readonly SpherePath SpherePath;
     /// <summary>The contacts.</summary>
-    public readonly CollisionInfo CollisionInfo = new();
-    /// <summary>Which objects of each cell the check spheres can reach (not retail; changes no result).</summary>
+    public readonly CollisionInfo CollisionInfo;
+    /// <summary>Which objects of each cell the check spheres can reach (shortcut <see cref="Shortcuts.ObjectCull"/>).</summary>
     internal readonly ObjectCull Cull = new();
     /// <summary>The cells the check position touches.</summary>
     public readonly CellArray CellArray = new();
+    /// <summary>The non-retail shortcuts this transition takes (see <see cref="Physics.Shortcuts"/>); fixed at construction.</summary>
+    internal readonly Shortcuts Shortcuts;
 
-    /// <summary>Creates a transition over a world.</summary>
-    public Transition(PhysicsWorld world) => World = world ?? throw new ArgumentNullException(nameof(world));
+    /// <summary>Creates a transition over a world, taking the default shortcuts (<see cref="ShortcutSettings.Default"/>).</summary>
+    public Transition(PhysicsWorld world) : this(world, ShortcutSettings.Default) { }
+
+    /// <summary>Creates a transition over a world, taking <paramref name="shortcuts"/> (none: retail's path step for step).</summary>
+    internal Transition(PhysicsWorld world, Shortcuts shortcuts)
+    {
+        World = world ?? throw new ArgumentNullException(nameof(world));
+        Shortcuts = shortcuts;
+        SpherePath = new SpherePath(shortcuts);
+        CollisionInfo = new CollisionInfo(shortcuts);
+        _interpolation = new RotationInterpolationMemo(shortcuts);
+        _slideLine = UnitMemo.For(shortcuts);
+    }
 
     /// <summary>The world collided with.</summary>
     public PhysicsWorld World { get; }
@@ -52,7 +65,7 @@ internal sealed partial class Transition
     }
 
     private float _subStepScale = 1f;
-    private readonly RotationInterpolationMemo _interpolation = new();
+    private readonly RotationInterpolationMemo _interpolation;
     // The last line along a sliding normal and the contact plane (adjust_offset's slide), normalized.
     private UnitMemo _slideLine;
 
@@ -270,6 +283,10 @@ internal sealed partial class Transition
     /// no result). Never true for the camera, whose last sub-step differs. <paramref name="plan"/> receives
     /// the step count and the first sub-step's constrained motion, for <see cref="FindTransitionalPosition(in StepPlan)"/>
     /// once the path is set up from the same mover, state and positions.
+    /// Shortcut <see cref="Shortcuts.EarlyRefusal"/> (not retail). Skips: setting up the path for a move that
+    /// fails before its first insert. Same result: the failing move changes nothing the caller sees (the result
+    /// is the state handed in, no contact, no normal). Proof: RefusedMoveTests, and the suite with shortcuts
+    /// off (then this only fills the plan's step count and never refuses).
     /// </summary>
     internal bool RefusesBeforeFirstStep(MoverDescription mover, in MoverState state, in Position begin, in Position end, out StepPlan plan)
     {
@@ -279,10 +296,11 @@ internal sealed partial class Transition
         float radius = mover.Spheres[0].Radius * mover.Scale;
         bool isViewer = (mover.Flags & ObjectInfoState.IsViewer) != 0;
         int numSteps = CalcNumSteps(offset, radius * _subStepScale, isViewer, out var perStep);
-        if (isViewer || numSteps <= 0 || numSteps > PhysicsConstants.MaxSubSteps)
+        bool early = (Shortcuts & Shortcuts.EarlyRefusal) != 0;
+        if (isViewer || numSteps <= 0 || numSteps > PhysicsConstants.MaxSubSteps || !early)
         {
             plan = new StepPlan { Offset = offset, PerStep = perStep, NumSteps = numSteps };
-            return !isViewer && numSteps > PhysicsConstants.MaxSubSteps;
+            return early && !isViewer && numSteps > PhysicsConstants.MaxSubSteps;
         }
         // As Prepare carries them into the collision info: the sliding normal's horizontal unit (zero
         // when none), the contact plane when in contact.

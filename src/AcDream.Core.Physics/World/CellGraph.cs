@@ -198,7 +198,7 @@ public sealed class CellGraph
         else
         {
             var startLand = _land.Get(startId);
-            if (startLand is { Building: null } && !SearchInFull && AloneInSquare(startLand, spheres))
+            if (startLand is { Building: null } && (Shortcuts & Shortcuts.LandCellAlone) != 0 && AloneInSquare(startLand, spheres))
             {
                 // The usual outdoor case: the list is the start cell alone, and it holds sphere 0's centre when
                 // the full search's test below says so (the same test, same bits).
@@ -248,16 +248,20 @@ public sealed class CellGraph
     }
 
     /// <summary>
-    /// Searches as retail does even where <see cref="AloneInSquare"/> holds: for tests, which compare the two.
+    /// The non-retail shortcuts this graph's cell search takes (only <see cref="Shortcuts.LandCellAlone"/> applies):
+    /// the default at construction (<see cref="ShortcutSettings.Default"/>).
     /// </summary>
-    internal bool SearchInFull { get; set; }
+    internal Shortcuts Shortcuts { get; set; } = ShortcutSettings.Default;
 
     // The least distance from the square's edges AloneInSquare accepts (1 mm): far more than the rounding of
     // AddOutsideCells' division, so its floor lands in the cell (see below).
     private const float SquareRim = 1e-3f;
 
     /// <summary>
-    /// True when <see cref="AddOutsideCells"/> would add <paramref name="land"/> alone (not retail; retail runs
+    /// Shortcut <see cref="Shortcuts.LandCellAlone"/> (not retail). Skips: the outdoor cell search (add_all_outside_cells
+    /// and the transit pass) for spheres well inside a cell without a building. Same result: the search would list
+    /// that cell alone (below). Proof: CellSearchShortcutTests, and the suite with shortcuts off.
+    /// True when <see cref="AddOutsideCells"/> would add <paramref name="land"/> alone (retail runs
     /// the search): at least one sphere, each in the cell's square (the spheres are in the landblock space of
     /// the land cell, which is the search's start cell) at least its radius (and 1 mm) from every edge. Then a
     /// search from this cell, if it has no building, lists this cell alone, holds the centre where its

@@ -1,6 +1,7 @@
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Body;

@@ -59,9 +59,9 @@ internal static class BoxFixtures
     /// A transition whose path has one sphere (or two, stacked 1 m apart) of radius <paramref name="radius"/>,
     /// moving from <paramref name="from"/> to <paramref name="to"/>, with the tested space the landblock itself.
     /// </summary>
-    public static Transition MakeTransition(Vector3 from, Vector3 to, float radius, bool twoSpheres = false)
+    public static Transition MakeTransition(Vector3 from, Vector3 to, float radius, bool twoSpheres = false, Shortcuts? shortcuts = null)
     {
-        var t = new Transition(new PhysicsWorld());
+        var t = shortcuts is { } taken ? new Transition(new PhysicsWorld(), taken) : new Transition(new PhysicsWorld());
         var path = t.SpherePath;
         Span<Sphere> spheres = stackalloc Sphere[2];
         spheres[0] = new Sphere(Vector3.Zero, radius);

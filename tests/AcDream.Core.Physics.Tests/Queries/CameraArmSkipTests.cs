@@ -1,5 +1,6 @@
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Queries;
+using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Queries;
 
@@ -59,33 +60,53 @@ public class CameraArmSkipTests
         // From y 101 towards 106 in 17 sub-steps of 0.3 m: the wall's face is at y 104, so a sphere 1 cm wider
         // than the camera's (0.31 m) stays clear of it up to a centre at 103.69: sub-steps 1-8 (y 101.3 .. 103.4)
         // are passed over, the 9th (103.7) is walked and the 10th meets the wall.
-        var q = CameraArmCases.QueryFor(CameraArmCases.Scene.Cottage);
+        var counter = new ShortcutCounter();
+        WorldQuery Query(CameraArmCases.Scene scene) => new(CameraArmCases.WorldOf(scene), Shortcuts.All, counter);
+        var q = Query(CameraArmCases.Scene.Cottage);
         q.CameraArm(new Position(CameraArmCases.Room, new Vector3(100, 101, 1.5f)), new Vector3(100, 106, 1.5f));
-        Assert.Equal(8, q.PassedSubSteps);
+        Assert.Equal(8, counter.ViewerSubSteps);
         // The two walked sub-steps (the 9th, centre y 103.7, and the 10th, backed off from the wall) are still more than
         // 1 cm in front of the wall's split (y 104), far from the doorway's portal (y 100) and outside the cellar's
         // cell: their cell searches are passed over too, one each.
-        Assert.Equal(2, q.PassedCellSearches);
+        Assert.Equal(2, counter.ViewerCellSearches);
         // Outdoors nothing is passed over in a land cell with a building (the cottage's), nor along a cell's
         // border; over the sloped landblock's cell 0xA9B40001 (ground below 2.2 m there), up to 0.31 m short of its
         // north edge: 25.18 m in 84 sub-steps of 0.2979 m northwards, y <= 24 - 0.31 for the first 62.
+        counter.Clear();
         q.CameraArm(new Position(CameraArmCases.Land, new Vector3(100, 97, 1.5f)), new Vector3(101, 90, 1.5f));
-        Assert.Equal(0, q.PassedSubSteps);
-        var door = CameraArmCases.QueryFor(CameraArmCases.Scene.Door);
-        door.CameraArm(new Position(CameraArmCases.Land, new Vector3(96, 97, 1.5f)), new Vector3(96, 103, 1.5f));
-        Assert.Equal(0, door.PassedSubSteps);
-        var slope = CameraArmCases.QueryFor(CameraArmCases.Scene.Slope);
-        slope.CameraArm(new Position(0xA9B40001, new Vector3(5, 5, 9)), new Vector3(5, 30, 12));
-        Assert.Equal(62, slope.PassedSubSteps);
+        Assert.Equal(0, counter.ViewerSubSteps);
+        Query(CameraArmCases.Scene.Door).CameraArm(new Position(CameraArmCases.Land, new Vector3(96, 97, 1.5f)), new Vector3(96, 103, 1.5f));
+        Assert.Equal(0, counter.ViewerSubSteps);
+        Query(CameraArmCases.Scene.Slope).CameraArm(new Position(0xA9B40001, new Vector3(5, 5, 9)), new Vector3(5, 30, 12));
+        Assert.Equal(62, counter.ViewerSubSteps);
+    }
 
-        // Nor when an observer watches: it sees every sub-step, the 10th meeting the wall.
-        var log = new Physics.Diagnostics.TransitionEventLog();
-        var engine = new PhysicsEngine(CameraArmCases.WorldOf(CameraArmCases.Scene.Cottage)) { Observer = log };
+    /// <summary>
+    /// An observer watches the path the engine runs without one: the camera's skip is taken, and the observer is
+    /// told every sub-step as the walk tells it (the same steps, check origins and offsets, bit for bit), then how
+    /// many were passed over. Went red with the passed sub-steps' reports left out, and with their origins taken
+    /// one sub-step late.
+    /// </summary>
+    [Fact]
+    public void AnObserver_SeesTheSkippingPath_ToldEverySubStepAsTheWalkTellsIt()
+    {
+        var world = CameraArmCases.WorldOf(CameraArmCases.Scene.Cottage);
         var viewer = new MoverDescription(0, [new Sphere(Vector3.Zero, WorldQuery.ViewerRadius)], 0f, 0f, PhysicsState.None, WorldQuery.ViewerFlags);
         var room = new Position(CameraArmCases.Room, new Vector3(100, 101, 1.5f));
-        engine.Resolve(viewer, MoverState.Airborne(room), new Position(CameraArmCases.Room, new Vector3(100, 106, 1.5f)));
-        Assert.Equal(0, engine.Transition.PassedViewerSteps);
-        Assert.Equal(10, log.Events.Count(e => e.Kind == Physics.Diagnostics.TransitionEventKind.SubStep));
+        var target = new Position(CameraArmCases.Room, new Vector3(100, 106, 1.5f));
+        var skipping = new Physics.Diagnostics.TransitionEventLog();
+        var walking = new Physics.Diagnostics.TransitionEventLog();
+        new PhysicsEngine(world, Shortcuts.All) { Observer = skipping }.Resolve(viewer, MoverState.Airborne(room), target);
+        new PhysicsEngine(world, Shortcuts.None) { Observer = walking }.Resolve(viewer, MoverState.Airborne(room), target);
+        static string Steps(Physics.Diagnostics.TransitionEventLog log) => string.Join("; ", log.Events
+            .Where(e => e.Kind == Physics.Diagnostics.TransitionEventKind.SubStep)
+            .Select(e => $"{e.Index} {Bits(e.Vector.X):X8} {Bits(e.Vector.Y):X8} {Bits(e.Vector.Z):X8} {Bits(e.Vector2.X):X8} {Bits(e.Vector2.Y):X8} {Bits(e.Vector2.Z):X8}"));
+        Assert.Equal(10, walking.Events.Count(e => e.Kind == Physics.Diagnostics.TransitionEventKind.SubStep));
+        Assert.Equal(Steps(walking), Steps(skipping));
+        var passed = skipping.Events.Where(e => e.Kind == Physics.Diagnostics.TransitionEventKind.ShortcutSkip).ToArray();
+        Assert.Equal([(Physics.Diagnostics.ShortcutSkip.ViewerSubSteps, 8), (Physics.Diagnostics.ShortcutSkip.ViewerCellSearches, 1), (Physics.Diagnostics.ShortcutSkip.ViewerCellSearches, 1)],
+            passed.Select(e => (e.Shortcut, e.Index)).ToArray());
+        Assert.DoesNotContain(walking.Events, e => e.Kind == Physics.Diagnostics.TransitionEventKind.ShortcutSkip);
     }
 
     [Fact]
@@ -102,11 +123,11 @@ public class CameraArmSkipTests
         foreach (var scene in Enum.GetValues<CameraArmCases.Scene>())
         {
             var world = CameraArmCases.WorldOf(scene);
-            var skipping = new WorldQuery(world);
-            var walking = new WorldQuery(world) { WalkEverySubStep = true };
-            var fast = new PhysicsEngine(world);
-            var slow = new PhysicsEngine(world);
-            slow.Transition.WalkEveryViewerStep = true;
+            var (skipped, walked) = (new ShortcutCounter(), new ShortcutCounter());
+            var skipping = new WorldQuery(world, Shortcuts.All, skipped);
+            var walking = new WorldQuery(world, Shortcuts.None, walked);
+            var fast = new PhysicsEngine(world, Shortcuts.All);
+            var slow = new PhysicsEngine(world, Shortcuts.None);
             for (int n = 0; n < 1200; n++)
             {
                 var (cell, pivot) = RandomPivot(random, scene);
@@ -115,12 +136,13 @@ public class CameraArmSkipTests
                 var from = new Position(cell, pivot);
                 string what = $"{scene} arm {n}: {from} -> {desired}, player 0x{player:X8}";
 
+                skipped.Clear();
                 var a = skipping.CameraArm(from, desired, player);
-                int steps = skipping.PassedSubSteps;
-                searches += skipping.PassedCellSearches;
+                int steps = skipped.ViewerSubSteps;
+                searches += skipped.ViewerCellSearches;
                 var b = walking.CameraArm(from, desired, player);
-                Assert.Equal(0, walking.PassedSubSteps);
-                Assert.Equal(0, walking.PassedCellSearches);
+                Assert.Equal(0, walked.ViewerSubSteps);
+                Assert.Equal(0, walked.ViewerCellSearches);
                 Assert.True(Same(a, b), $"{what}: passing over {steps} sub-steps gave {Show(a)}, walking gave {Show(b)}");
                 passed += steps > 0 ? 1 : 0;
 

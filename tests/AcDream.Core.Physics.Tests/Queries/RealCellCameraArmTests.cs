@@ -22,8 +22,9 @@ public class RealCellCameraArmTests
         var world = SceneLoader.Load(File.ReadAllText(Path.Combine(dir, "scenes", scene))).World;
         var cells = world.Cells.EnvCellsOf(0xA9B4).ToArray();
         Assert.NotEmpty(cells);
-        var skipping = new WorldQuery(world);
-        var walking = new WorldQuery(world) { WalkEverySubStep = true };
+        var skipped = new Support.ShortcutCounter();
+        var skipping = new WorldQuery(world, Shortcuts.All, skipped);
+        var walking = new WorldQuery(world, Shortcuts.None);
         var random = new Random(77);
         int arms = 0, passed = 0;
         while (arms < 2000)
@@ -38,8 +39,9 @@ public class RealCellCameraArmTests
             var direction = Vector3.Normalize(new Vector3((float)random.NextDouble() * 2 - 1, (float)random.NextDouble() * 2 - 1, (float)random.NextDouble() - 0.3f));
             var desired = pivot + direction * (float)(random.NextDouble() * 8);
             var from = new Position(cell.Id, pivot);
+            skipped.Clear();
             var a = skipping.CameraArm(from, desired);
-            int steps = skipping.PassedSubSteps;
+            int steps = skipped.ViewerSubSteps;
             var b = walking.CameraArm(from, desired);
             var (oa, ob) = (a.Camera.Origin, b.Camera.Origin);
             bool same = a.Camera.CellId == b.Camera.CellId && a.Placement == b.Placement && a.Blocked == b.Blocked

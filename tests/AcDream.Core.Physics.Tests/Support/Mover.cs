@@ -7,10 +7,12 @@ namespace AcDream.Core.Physics.Tests.Support;
 /// <summary>A mover walked frame by frame through a world: the apparatus side of the tests.</summary>
 internal sealed class Mover
 {
-    private readonly PhysicsEngine _engine;
+    private PhysicsEngine _engine;
+    private readonly PhysicsWorld _world;
 
     public Mover(PhysicsWorld world, MoverDescription description, MoverState start)
     {
+        _world = world;
         _engine = new PhysicsEngine(world);
         Description = description;
         State = start;
@@ -21,6 +23,13 @@ internal sealed class Mover
     public Vector3 Origin => State.Position.Origin;
     public List<Frame> Frames { get; } = new();
     public TransitionEventLog? Log { get; private set; }
+
+    /// <summary>Moves through an engine taking <paramref name="shortcuts"/> (for the tests of a shortcut itself, whatever the run's mode).</summary>
+    public Mover With(Shortcuts shortcuts)
+    {
+        _engine = new PhysicsEngine(_world, shortcuts) { Observer = Log };
+        return this;
+    }
 
     public Mover WithLog()
     {

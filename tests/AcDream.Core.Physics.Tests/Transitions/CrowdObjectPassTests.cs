@@ -10,8 +10,8 @@ namespace AcDream.Core.Physics.Tests.Transitions;
 /// <summary>
 /// The object pass in a pile of creatures (not retail; it changes no result). Each candidate the cull lists is
 /// tested against the check spheres' own box before its shapes are, and a cylinder's test sets only the
-/// local-space placement retail's cache_localspace_sphere leaves for it. The reference is the object pass with
-/// an observer attached, which tests every candidate of the cull's region and reports the rest as skipped.
+/// local-space placement retail's cache_localspace_sphere leaves for it. The reference is the engine with no
+/// shortcut (<see cref="Shortcuts.None"/>), which tests every object of every cell the spheres touch, as retail.
 /// </summary>
 public class CrowdObjectPassTests
 {
@@ -32,8 +32,8 @@ public class CrowdObjectPassTests
 
     /// <summary>
     /// 70 creatures, stools and balls packed into 8 m × 8 m (turned every way), and 300 seeded walks of ten
-    /// frames through them, as moves and as body steps: every frame's result is the same bits with and without
-    /// the tight test. Went red with the check spheres' box shrunk by 20 cm on every side, beyond the reach
+    /// frames through them, as moves and as body steps: every frame's result is the same bits with every shortcut
+    /// (the cull, the crowded cell's index, the tight test, the cylinder's local space) and with none. Went red with the check spheres' box shrunk by 20 cm on every side, beyond the reach
     /// boxes' 6 cm margin (shrunk by 5 cm, within it, it stays green, as it should).
     /// </summary>
     [Fact]
@@ -48,8 +48,8 @@ public class CrowdObjectPassTests
             var (setup, flags) = (i % 7) switch { 0 => (Stool, ShadowFlags.None), 1 => (Ball, ShadowFlags.None), _ => (Creature, ShadowFlags.IsCreature) };
             world.Objects.Register(0x8000_0000u + (uint)i, setup, at, 1f, PhysicsState.Gravity, flags);
         }
-        var plain = new PhysicsEngine(world);
-        var observed = new PhysicsEngine(world) { Observer = new AcDream.Core.Physics.Diagnostics.TransitionEventLog() };
+        var plain = new PhysicsEngine(world, Shortcuts.All);
+        var retail = new PhysicsEngine(world, Shortcuts.None);
         var player = MoverDescription.Player();
         int frames = 0, collided = 0;
         for (int walk = 0; walk < 300; walk++)
@@ -67,7 +67,7 @@ public class CrowdObjectPassTests
                     var tb = b.Position;
                     tb.Frame.Origin += velocity / 30f;
                     var ra = plain.Resolve(player, a, ta);
-                    var rb = observed.Resolve(player, b, tb);
+                    var rb = retail.Resolve(player, b, tb);
                     Assert.Equal(Bits(rb), Bits(ra));
                     collided += ra.CollidedObjects.Length > 0 ? 1 : 0;
                     (a, b) = (ra.Next, rb.Next);
@@ -80,7 +80,7 @@ public class CrowdObjectPassTests
                 for (int f = 0; f < 10; f++, frames++)
                 {
                     var ra = plain.Step(player, a, ba, 0.2, velocity);
-                    var rb = observed.Step(player, b, bb, 0.2, velocity);
+                    var rb = retail.Step(player, b, bb, 0.2, velocity);
                     Assert.Equal(Bits(rb.Move), Bits(ra.Move));
                     collided += ra.Move.CollidedObjects.Length > 0 ? 1 : 0;
                     (a, b, ba, bb) = (ra.Next, rb.Next, ra.Body, rb.Body);

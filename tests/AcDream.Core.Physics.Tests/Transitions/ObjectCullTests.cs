@@ -32,7 +32,7 @@ public class ObjectCullTests
     [Fact]
     public void AnObjectBeyondReach_IsReportedSkippedOutOfReach_AndNeverTested()
     {
-        var player = TestScenes.Player(DoorAndFarBarrel(), 100, 98.5f).WithLog();
+        var player = TestScenes.Player(DoorAndFarBarrel(), 100, 98.5f).With(Shortcuts.All).WithLog();
         player.Walk(new Vector3(0, 0.1f, 0), 12);
 
         var events = player.Log!.Events;

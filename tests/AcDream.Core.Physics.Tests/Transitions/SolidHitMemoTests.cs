@@ -39,7 +39,7 @@ public class SolidHitMemoTests
     private static void AssertRememberedAndTheRealPlacementTestAgrees(Vector3 from, Vector3 to)
     {
         var tree = BoxFixtures.SolidBox(out _);
-        var t = BoxFixtures.MakeTransition(from, to, 0.5f);
+        var t = BoxFixtures.MakeTransition(from, to, 0.5f, shortcuts: Shortcuts.All);
         var path = t.SpherePath;
         Assert.Equal(TransitionState.Adjusted, BspResponses.FindCollisions(tree, t, 1f, Owner));
         Assert.False(path.KnownSolidHit(Owner, Space, 1f)); // a move's insert is not a placement
@@ -60,14 +60,14 @@ public class SolidHitMemoTests
     public void ContactHit_IsRememberedAtItsCheckPosition_AndTheRealPlacementTestAgrees()
     {
         var tree = BoxFixtures.SolidBox(out _);
-        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         t.ObjectInfo.State |= ObjectInfoState.Contact;
         var path = t.SpherePath;
         var hitAt = path.CheckPos;
         BspResponses.FindCollisions(tree, t, 1f, Owner);
         Assert.True(path.SolidHit.Holds(Owner, Space, 1f, hitAt));
 
-        var placement = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var placement = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         placement.SpherePath.InsertType = InsertType.Placement;
         Assert.Equal(TransitionState.Collided, BspResponses.FindCollisions(tree, placement, 1f));
     }
@@ -76,7 +76,7 @@ public class SolidHitMemoTests
     [Fact]
     public void Miss_IsNotRemembered()
     {
-        var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(2.5f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(new Vector3(3f, 0, 0), new Vector3(2.5f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         Assert.Equal(TransitionState.OK, BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner));
         t.SpherePath.InsertType = InsertType.Placement;
         Assert.False(t.SpherePath.KnownSolidHit(Owner, Space, 1f));
@@ -90,7 +90,7 @@ public class SolidHitMemoTests
     [Fact]
     public void AnswersOnlyForTheSameOwnerSpaceScaleAndCheckPosition()
     {
-        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f);
+        var t = BoxFixtures.MakeTransition(new Vector3(2f, 0, 0), new Vector3(1.3f, 0, 0), 0.5f, shortcuts: Shortcuts.All);
         var path = t.SpherePath;
         BspResponses.FindCollisions(BoxFixtures.SolidBox(out _), t, 1f, Owner);
         path.InsertType = InsertType.Placement;

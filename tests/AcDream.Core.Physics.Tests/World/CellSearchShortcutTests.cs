@@ -26,10 +26,9 @@ public class CellSearchShortcutTests
 
     private static (uint[] Cells, uint Holder, bool Interior) Search(CellGraph graph, bool full, in Position position, Sphere[] spheres, bool findContaining)
     {
-        graph.SearchInFull = full;
+        graph.Shortcuts = full ? Shortcuts.None : Shortcuts.LandCellAlone;
         var cells = new CellArray();
         var holder = graph.FindCellList(position, spheres, cells, findContaining, out bool interior);
-        graph.SearchInFull = false;
         return (Enumerable.Range(0, cells.Count).Select(i => cells[i].Id).ToArray(), holder?.Id ?? 0, interior);
     }
 
