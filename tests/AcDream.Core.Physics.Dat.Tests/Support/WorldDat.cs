@@ -13,9 +13,6 @@ using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 
-/// <summary>What the game (not the DAT) says about a placed object: its id, scale, state and flags.</summary>
-internal readonly record struct ObjectDescription(uint Id, float Scale, PhysicsState State, ShadowFlags Flags);
-
 /// <summary>
 /// A world we trust (a scene's, loaded by the scene loader) written out as the DAT objects retail would
 /// hold for it: every model a GfxObj, every setup a Setup, every env cell an EnvCell on an Environment of
