@@ -1,6 +1,4 @@
 using System.Collections.Generic;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Dat;
 

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.World;
-
 namespace AcDream.Core.Physics.Dat;
 
 /// <summary>Describes static object <paramref name="index"/> of a landblock (its LandBlockInfo's objects first, then each env cell's, in order).</summary>

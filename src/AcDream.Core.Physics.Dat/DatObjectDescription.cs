@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.World;
-
 namespace AcDream.Core.Physics.Dat;
 
 /// <summary>

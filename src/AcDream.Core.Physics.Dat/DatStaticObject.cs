@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Dat;

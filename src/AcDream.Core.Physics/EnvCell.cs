@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 using AcDream.Core.Physics.World;
 

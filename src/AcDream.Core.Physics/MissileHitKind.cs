@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace AcDream.Core.Physics;
 
 /// <summary>What a missile's flight ended on (retail's two reports: CPhysicsObj::report_object_collision and report_environment_collision).</summary>

@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 

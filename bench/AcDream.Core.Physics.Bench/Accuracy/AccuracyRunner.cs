@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using System.Threading.Tasks;
 using AcDream.Core.Physics.Reference;

@@ -1,8 +1,5 @@
-using System;
-using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
-using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Bench.Accuracy;
 

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
 using AcDream.Core.Physics.Transitions;

@@ -1,9 +1,6 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Bench.Accuracy;
 using BenchmarkDotNet.Attributes;
-using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Bench.Benchmarks;
 

@@ -1,8 +1,5 @@
 using System;
-using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.World;
 

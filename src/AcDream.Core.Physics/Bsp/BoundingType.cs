@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Bsp;

@@ -1,5 +1,3 @@
-using System.Numerics;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Diagnostics;

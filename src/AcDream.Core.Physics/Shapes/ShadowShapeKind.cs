@@ -1,6 +1,3 @@
-using System.Numerics;
-using AcDream.Core.Physics.Geometry;
-
 namespace AcDream.Core.Physics.Shapes;
 
 /// <summary>The kind of a collision shape.</summary>

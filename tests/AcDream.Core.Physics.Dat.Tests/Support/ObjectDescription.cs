@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;

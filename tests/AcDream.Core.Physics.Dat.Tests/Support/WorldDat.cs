@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
@@ -9,7 +8,6 @@ using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatFrame = DatReaderWriter.Types.Frame;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
 using DatSphere = DatReaderWriter.Types.Sphere;
-using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 

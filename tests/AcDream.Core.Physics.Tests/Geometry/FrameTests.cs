@@ -1,5 +1,3 @@
-using AcDream.Core.Physics;
-
 namespace AcDream.Core.Physics.Tests.Geometry;
 
 public class FrameTests

@@ -1,13 +1,10 @@
 using System.IO;
 using System.Diagnostics;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Robustness;
 

@@ -1,5 +1,3 @@
-using System.IO;
-using System.Diagnostics;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;

@@ -1,11 +1,7 @@
-using System.Numerics;
-using System.IO;
 using System.Text.Json.Nodes;
 using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.SceneFiles;
 

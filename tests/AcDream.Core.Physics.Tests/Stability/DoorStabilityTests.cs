@@ -1,8 +1,5 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bench;
 using AcDream.Core.Physics.Bench.Accuracy;
-using AcDream.Core.Physics.Reference;
-using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.Stability;
 
