@@ -1,9 +1,6 @@
-using System;
 using System.Globalization;
 using System.IO;
-using System.Numerics;
 using System.Text;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bench.Benchmarks;
 using AcDream.Core.Physics.Bench.Reporting;
 

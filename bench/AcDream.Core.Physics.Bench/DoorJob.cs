@@ -1,9 +1,5 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
-using System.Linq;
-using System.Numerics;
 using AcDream.Core.Physics.Bench.Accuracy;
 using AcDream.Core.Physics.Bench.Benchmarks;
 using AcDream.Core.Physics.Bench.Reporting;

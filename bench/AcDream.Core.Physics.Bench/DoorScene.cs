@@ -1,11 +1,6 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Reference;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Bench;
 

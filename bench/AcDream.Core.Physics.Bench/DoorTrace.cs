@@ -1,6 +1,4 @@
-using System;
 using System.Globalization;
-using System.Numerics;
 using AcDream.Core.Physics.Bench.Accuracy;
 using AcDream.Core.Physics.Reference;
 

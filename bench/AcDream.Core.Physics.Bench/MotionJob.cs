@@ -1,11 +1,7 @@
-using System;
 using System.Globalization;
 using System.IO;
-using System.Numerics;
 using System.Text;
 using AcDream.Core.Physics.Bench.Reporting;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Bench;

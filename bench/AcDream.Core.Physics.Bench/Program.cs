@@ -1,5 +1,3 @@
-using System;
-using System.Linq;
 using BenchmarkDotNet.Running;
 
 namespace AcDream.Core.Physics.Bench;

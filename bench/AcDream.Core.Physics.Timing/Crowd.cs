@@ -2,12 +2,8 @@ using System;
 using System.Numerics;
 using System.Diagnostics;
 using System.Threading;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Timing;
 

@@ -1,10 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Timing;
 

@@ -1,10 +1,8 @@
 using System;
 using System.Collections.Generic;
-using AcDream.Core.Physics.World;
 using DatReaderWriter.Enums;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
-using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat;
 

@@ -2,13 +2,10 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 using DatPolygon = DatReaderWriter.Types.Polygon;
-using Polygon = AcDream.Core.Physics.Polygon;
-using Sphere = AcDream.Core.Physics.Sphere;
 
 namespace AcDream.Core.Physics.Dat;
 

@@ -1,7 +1,5 @@
 using System;
 using System.Collections.Generic;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 
 namespace AcDream.Core.Physics.Dat;

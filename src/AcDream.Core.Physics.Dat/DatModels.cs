@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.Shapes;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
 

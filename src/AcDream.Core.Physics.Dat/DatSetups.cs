@@ -1,10 +1,7 @@
 using System;
 using System.Collections.Generic;
-using AcDream.Core.Physics.Shapes;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
-using CylSphere = AcDream.Core.Physics.CylSphere;
-using Sphere = AcDream.Core.Physics.Sphere;
 
 namespace AcDream.Core.Physics.Dat;
 

@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
 

@@ -1,12 +1,9 @@
 using System;
 using System.Collections.Generic;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
-using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat;
 

@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Numerics;
-using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
 using ScottPlot;
 using AcDream.Core.Physics.Viewer;

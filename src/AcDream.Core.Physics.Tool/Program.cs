@@ -7,7 +7,6 @@ using System.Text;
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tool;
 

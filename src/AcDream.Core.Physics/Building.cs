@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics;

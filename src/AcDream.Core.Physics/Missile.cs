@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
 using AcDream.Core.Physics.World;

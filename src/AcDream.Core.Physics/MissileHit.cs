@@ -2,25 +2,6 @@ using System.Numerics;
 
 namespace AcDream.Core.Physics;
 
-/// <summary>What a missile's flight ended on (retail's two reports: CPhysicsObj::report_object_collision and report_environment_collision).</summary>
-public enum MissileHitKind : byte
-{
-    /// <summary>Nothing yet: the missile is still in flight.</summary>
-    None = 0,
-    /// <summary>
-    /// An object (<see cref="MissileHit.ObjectId"/>): retail report_object_collision, which hands the missile's
-    /// weenie an AtkCollisionProfile (the object's id) and clears the missile's Missile, AlignPath and
-    /// PathClipped bits.
-    /// </summary>
-    Object = 1,
-    /// <summary>
-    /// Cell geometry, a building, terrain, a static object, or an object with
-    /// <see cref="PhysicsState.ReportCollisionsAsEnvironment"/> (then <see cref="MissileHit.ObjectId"/> names it):
-    /// retail report_environment_collision, which clears the same bits.
-    /// </summary>
-    Environment = 2,
-}
-
 /// <summary>
 /// The one hit of a missile's flight (see <see cref="Missile"/>): what it hit, where the missile stopped and
 /// the surface's normal. Retail reports it from CPhysicsObj::handle_all_collisions after the quantum's
@@ -64,20 +45,4 @@ public readonly struct MissileHit
     /// <inheritdoc />
     public override string ToString() =>
         Kind == MissileHitKind.None ? "no hit" : $"{Kind} 0x{ObjectId:X8} at {Position.Frame.Origin} normal {Normal} (quantum {Quantum})";
-}
-
-/// <summary>The outcome of one <see cref="PhysicsEngine.Step(Missile, double)"/>.</summary>
-public readonly struct MissileStepResult
-{
-    internal MissileStepResult(BodyStepResult step, MissileHit hit)
-    {
-        Step = step;
-        Hit = hit;
-    }
-
-    /// <summary>The body step: the move, the body and the quanta (as <see cref="PhysicsEngine.Step(MoverDescription, in MoverState, in BodyState, double, Vector3, float)"/> reports them).</summary>
-    public BodyStepResult Step { get; }
-
-    /// <summary>The hit reported in this step, or <see cref="MissileHitKind.None"/>: a flight reports one hit, in the step it happens.</summary>
-    public MissileHit Hit { get; }
 }

@@ -1,7 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics;

@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics;
 

@@ -1,7 +1,5 @@
 using System;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Managers;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics;

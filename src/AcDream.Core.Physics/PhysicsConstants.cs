@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Transitions;
 namespace AcDream.Core.Physics;
 
 /// <summary>

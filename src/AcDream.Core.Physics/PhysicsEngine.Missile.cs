@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Body;
 
 namespace AcDream.Core.Physics;
 

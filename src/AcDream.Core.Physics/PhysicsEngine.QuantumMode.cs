@@ -1,5 +1,4 @@
 using System.Numerics;
-using AcDream.Core.Physics.Body;
 
 namespace AcDream.Core.Physics;
 

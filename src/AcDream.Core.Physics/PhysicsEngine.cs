@@ -1,5 +1,4 @@
 using System;
-using System.Numerics;
 using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Validation;

@@ -1,6 +1,5 @@
 using System;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics;

@@ -1,5 +1,4 @@
 using System;
-using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics;
 

@@ -1,5 +1,3 @@
-using System;
-
 namespace AcDream.Core.Physics;
 
 /// <summary>

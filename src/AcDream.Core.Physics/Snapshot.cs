@@ -1,9 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Snapshots;
 
 namespace AcDream.Core.Physics;

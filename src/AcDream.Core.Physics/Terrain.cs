@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 using AcDream.Core.Physics.World;
 

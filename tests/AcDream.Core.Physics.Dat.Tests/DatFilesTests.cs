@@ -1,8 +1,5 @@
-using System.IO;
 using System.Threading;
-using AcDream.Core.Physics.Motion;
 using DatReaderWriter.DBObjs;
-using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 using AcDream.Core.Physics.Scenes;
 using DrwAnimation = DatReaderWriter.DBObjs.Animation;

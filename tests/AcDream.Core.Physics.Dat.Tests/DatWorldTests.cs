@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Shapes;
-using DatReaderWriter.DBObjs;
 using DatReaderWriter.Types;
 
 namespace AcDream.Core.Physics.Dat.Tests;

@@ -1,6 +1,5 @@
 using AcDream.Core.Physics.Tests.Motion;
 using AcDream.Core.Physics.Dat.Tests.Support;
-using System.IO;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Parity;
 

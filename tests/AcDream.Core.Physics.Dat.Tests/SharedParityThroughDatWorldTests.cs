@@ -1,4 +1,3 @@
-using System.IO;
 using AcDream.Core.Physics.Dat.Tests.Support;
 using AcDream.Core.Physics.Parity;
 

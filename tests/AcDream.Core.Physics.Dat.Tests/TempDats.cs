@@ -1,4 +1,3 @@
-using System.IO;
 using DatReaderWriter;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Lib.IO;

@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.IO;
 using AcDream.Core.Physics.Tool;
 
 namespace AcDream.Core.Physics.Dat.Tests;

@@ -1,5 +1,4 @@
 using DatReaderWriter.DBObjs;
-using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 using DrwCylSphere = DatReaderWriter.Types.CylSphere;
 using DrwFrame = DatReaderWriter.Types.Frame;

@@ -1,63 +1,8 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using System.Threading.Tasks;
 using AcDream.Core.Physics.Reference;
 
 namespace AcDream.Core.Physics.Bench.Accuracy;
-
-/// <summary>Ways a method can fail an approach (several may apply).</summary>
-[Flags]
-public enum DoorFailure
-{
-    /// <summary>No failure.</summary>
-    None = 0,
-    /// <summary>Collision normals alternated frame to frame (n_k ≠ n_k−1, n_k = n_k−2).</summary>
-    Jitter = 1,
-    /// <summary>The mover stayed put while the reference moved and the requested motion along the face per sub-step exceeded √EPSILON.</summary>
-    Stuck = 2,
-    /// <summary>A sphere ended a frame deeper than EPSILON inside the slab.</summary>
-    Penetration = 4,
-    /// <summary>The mover crossed the slab.</summary>
-    Tunnel = 8,
-    /// <summary>A non-finite position, or the method threw.</summary>
-    NaN = 16,
-}
-
-/// <summary>What one method did on one approach.</summary>
-public sealed class ApproachOutcome
-{
-    /// <summary>The approach.</summary>
-    public required DoorApproach Approach { get; init; }
-    /// <summary>The failures seen.</summary>
-    public DoorFailure Failures { get; set; }
-    /// <summary>Frames walked.</summary>
-    public int Frames { get; set; }
-    /// <summary>The deepest penetration of the slab after any frame (metres; ≤ 0 when clear).</summary>
-    public float MaxPenetration { get; set; } = float.NegativeInfinity;
-    /// <summary>Frames ending deeper than EPSILON in the slab.</summary>
-    public int PenetrationFrames { get; set; }
-    /// <summary>Frames crossing the slab.</summary>
-    public int TunnelFrames { get; set; }
-    /// <summary>Stuck frames.</summary>
-    public int StuckFrames { get; set; }
-    /// <summary>Jitter frames.</summary>
-    public int JitterFrames { get; set; }
-    /// <summary>NaN or failed frames.</summary>
-    public int NaNFrames { get; set; }
-    /// <summary>Per frame: distance from the reference's resolution of the same frame from the same start (metres).</summary>
-    public required float[] FrameErrors { get; init; }
-    /// <summary>Distance between the method's and the reference's positions after the whole approach.</summary>
-    public float FinalError { get; set; }
-    /// <summary>The reference touched the door during the approach and the heading has a tangential part.</summary>
-    public bool Slid { get; set; }
-    /// <summary>Distance travelled along the face (X) by the method over the approach.</summary>
-    public float SlideMethod { get; set; }
-    /// <summary>Distance travelled along the face (X) by the reference over the approach.</summary>
-    public float SlideReference { get; set; }
-    /// <summary>The frames' inputs (state and target) for timing replays, when recorded.</summary>
-    public (MoverState State, Vector3 Target)[]? Workload { get; set; }
-}
 
 /// <summary>Runs approaches with a method and measures it against the reference sweep.</summary>
 public static class AccuracyRunner

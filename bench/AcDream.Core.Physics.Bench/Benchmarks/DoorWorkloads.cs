@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using System.Threading.Tasks;
 using AcDream.Core.Physics.Bench.Accuracy;
 

@@ -1,7 +1,4 @@
-using System;
 using System.Diagnostics;
-using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Bench.Compile;
 

@@ -1,9 +1,5 @@
-using System;
-using System.Linq;
 using System.Diagnostics;
-using System.Numerics;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Transitions.Responses;
 using AcDream.Core.Physics.Validation;

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Globalization;
 using System.IO;
 using AcDream.Core.Physics.Dat;
 using AcDream.Core.Physics.Dat.Tests.Support;

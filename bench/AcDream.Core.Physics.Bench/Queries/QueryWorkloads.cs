@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using AcDream.Core.Physics.Queries;
 using AcDream.Core.Physics.Scenes;
 

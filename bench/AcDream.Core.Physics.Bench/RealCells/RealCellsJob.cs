@@ -1,14 +1,9 @@
-using System;
-using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
-using System.Linq;
-using System.Numerics;
 using System.Text;
 using System.IO.Compression;
 using System.Text.Json;
 using System.Text.Json.Nodes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bench.Benchmarks;
 using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;

@@ -1,7 +1,4 @@
-using System;
 using System.Diagnostics;
-using System.Numerics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 

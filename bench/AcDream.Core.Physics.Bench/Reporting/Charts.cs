@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using System.Linq;
 using AcDream.Core.Physics.Bench.Accuracy;
 using ScottPlot;

@@ -1,13 +1,8 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
-using System.Numerics;
 using System.Text;
 using System.Threading.Tasks;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Bench.Reporting;
 using AcDream.Core.Physics.Scenes;
 

@@ -1,9 +1,6 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Bench.Server;

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Motion;
-
 namespace AcDream.Core.Physics.Parity;
 
 /// <summary>One call: what, the motion, speed, hold key, the jump's extent and stamina, and the reference's result ("None" or an error name).</summary>

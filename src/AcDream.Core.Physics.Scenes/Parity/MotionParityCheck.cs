@@ -2,7 +2,6 @@ using System;
 using System.Globalization;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Parity;

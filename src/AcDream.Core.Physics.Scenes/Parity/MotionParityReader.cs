@@ -2,10 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
-using System.Numerics;
 using System.Text.Json;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 

@@ -1,6 +1,3 @@
-using System.IO;
-using AcDream.Core.Physics.Motion;
-
 namespace AcDream.Core.Physics.Parity;
 
 /// <summary>A MoveTo call a manager parity file makes before a frame's time passes.</summary>

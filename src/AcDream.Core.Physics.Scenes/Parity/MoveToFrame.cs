@@ -1,5 +1,4 @@
 using System.Numerics;
-using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Parity;
 

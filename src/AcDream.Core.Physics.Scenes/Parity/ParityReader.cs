@@ -4,7 +4,6 @@ using System.IO;
 using System.IO.Compression;
 using System.Numerics;
 using System.Text.Json;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Parity;

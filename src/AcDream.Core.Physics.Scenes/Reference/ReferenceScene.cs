@@ -1,8 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Reference;
 

@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Reference;
 

@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Scenes;
 

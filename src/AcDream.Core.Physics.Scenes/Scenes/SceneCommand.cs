@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Motion;
-
 namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Motion;
-
 namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>What a scene command does (the <see cref="ObjectMotion"/> call it makes).</summary>

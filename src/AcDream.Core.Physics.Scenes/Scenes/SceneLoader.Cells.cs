@@ -1,11 +1,8 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
 using System.Text.Json;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 

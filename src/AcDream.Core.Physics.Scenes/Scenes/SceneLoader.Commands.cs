@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
 using System.Numerics;
 using System.Text.Json;
 using AcDream.Core.Physics.Motion;

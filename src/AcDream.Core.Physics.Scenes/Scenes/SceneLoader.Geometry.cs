@@ -1,11 +1,7 @@
-using System;
 using System.Collections.Generic;
-using System.IO;
 using System.Numerics;
 using System.Text.Json;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Scenes;

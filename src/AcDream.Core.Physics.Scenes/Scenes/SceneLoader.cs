@@ -4,9 +4,7 @@ using System.IO;
 using System.Security.Cryptography;
 using System.Text;
 using System.Text.Json;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Validation;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 

@@ -1,6 +1,5 @@
 using System.Collections.Generic;
 using System;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Scenes;

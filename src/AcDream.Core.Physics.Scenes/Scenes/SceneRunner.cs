@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Reflection;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Diagnostics;
 
 namespace AcDream.Core.Physics.Scenes;

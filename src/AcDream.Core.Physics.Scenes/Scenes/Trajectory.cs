@@ -4,7 +4,6 @@ using System.IO;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 

@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 

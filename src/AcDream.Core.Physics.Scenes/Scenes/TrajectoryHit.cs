@@ -1,5 +1,3 @@
-using System;
-
 namespace AcDream.Core.Physics.Scenes;
 
 /// <summary>A missile's hit as a trajectory records it: what was hit and in which quantum of the flight (see <see cref="MissileHit"/>).</summary>

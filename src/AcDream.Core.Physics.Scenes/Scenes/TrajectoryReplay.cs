@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Numerics;
 using AcDream.Core.Physics.Diagnostics;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Scenes;
 

@@ -1,6 +1,4 @@
 using System.Numerics;
-using AcDream.Core.Physics.Diagnostics;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Viewer;
 

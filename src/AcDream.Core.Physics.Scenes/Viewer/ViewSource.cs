@@ -1,6 +1,3 @@
-using System;
-using AcDream.Core.Physics.World;
-
 namespace AcDream.Core.Physics.Viewer;
 
 /// <summary>What a <see cref="ViewShape"/> belongs to, as the viewer colours it.</summary>

@@ -4,8 +4,6 @@ using System.IO;
 using System.Linq;
 using System.Numerics;
 using System.Text.Json;
-using AcDream.Core.Physics.Diagnostics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Viewer;
 

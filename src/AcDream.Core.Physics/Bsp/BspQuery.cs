@@ -4,17 +4,6 @@ using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Bsp;
 
-/// <summary>Where a sphere lies against a cell BSP (retail BoundingType).</summary>
-internal enum BoundingType
-{
-    /// <summary>Entirely outside.</summary>
-    Outside = 0,
-    /// <summary>Partly inside.</summary>
-    PartiallyInside = 1,
-    /// <summary>Entirely inside.</summary>
-    EntirelyInside = 2,
-}
-
 /// <summary>
 /// The retail geometric queries over a whole physics BSP tree (BSPTREE): they answer with plain values and
 /// change nothing but what they are handed. The per-node recursions they drive live in

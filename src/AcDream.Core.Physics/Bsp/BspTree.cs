@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Validation;
 
 namespace AcDream.Core.Physics.Bsp;

@@ -4,40 +4,6 @@ using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Diagnostics;
 
-/// <summary>The kind of a recorded diagnostics event.</summary>
-public enum TransitionEventKind : byte
-{
-    /// <summary>A sub-step began.</summary>
-    SubStep,
-    /// <summary>An object's shape was tested.</summary>
-    ShapeTested,
-    /// <summary>An object's shape was skipped.</summary>
-    ShapeSkipped,
-    /// <summary>An object's shape set the collision normal.</summary>
-    ObjectNormal,
-    /// <summary>The check position changed cell.</summary>
-    CellChanged,
-    /// <summary>A step up was tried.</summary>
-    StepUp,
-    /// <summary>A shortcut passed over work (<see cref="TransitionEvent.Shortcut"/>; how much in <see cref="TransitionEvent.Index"/>).</summary>
-    ShortcutSkip,
-}
-
-/// <summary>One diagnostics event; fields not used by its kind are zero.</summary>
-public readonly record struct TransitionEvent(
-    TransitionEventKind Kind,
-    uint EntityId = 0,
-    ShadowShapeKind ShapeKind = ShadowShapeKind.Bsp,
-    int Index = 0,
-    TransitionState Result = TransitionState.Invalid,
-    SkipReason Reason = SkipReason.BspOnlyDispatch,
-    Vector3 Vector = default,
-    Vector3 Vector2 = default,
-    uint FromCell = 0,
-    uint ToCell = 0,
-    bool Succeeded = false,
-    ShortcutSkip Shortcut = ShortcutSkip.ViewerSubSteps);
-
 /// <summary>An observer that records every event in order, for tests, tools and logs. Allocates; diagnostics only.</summary>
 public sealed class TransitionEventLog : ITransitionObserver
 {

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Geometry;
-
 namespace AcDream.Core.Physics.Geometry;
 
 /// <summary>Which feature of a shape a swept sphere touched first.</summary>

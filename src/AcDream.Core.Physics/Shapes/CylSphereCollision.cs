@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Shapes;
 

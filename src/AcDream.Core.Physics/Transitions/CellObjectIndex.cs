@@ -1,5 +1,4 @@
 using System;
-using System.Numerics;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;

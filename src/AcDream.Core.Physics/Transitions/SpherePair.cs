@@ -1,5 +1,4 @@
 using System.Runtime.CompilerServices;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Transitions;
 

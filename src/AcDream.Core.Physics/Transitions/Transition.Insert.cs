@@ -1,6 +1,5 @@
 using System.Numerics;
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Physics.Transitions.Responses;
 

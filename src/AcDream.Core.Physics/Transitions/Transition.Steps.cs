@@ -1,5 +1,4 @@
 using System.Numerics;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Transitions;

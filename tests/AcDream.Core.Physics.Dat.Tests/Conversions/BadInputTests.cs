@@ -7,7 +7,6 @@ using DatReaderWriter.Types;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatFrame = DatReaderWriter.Types.Frame;
-using DatPolygon = DatReaderWriter.Types.Polygon;
 using DatSphere = DatReaderWriter.Types.Sphere;
 
 namespace AcDream.Core.Physics.Dat.Tests.Conversions;

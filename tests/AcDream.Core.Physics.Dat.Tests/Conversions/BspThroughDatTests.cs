@@ -1,6 +1,5 @@
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Dat.Tests.Support;
-using AcDream.Core.Physics.Geometry;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Lib.IO;
 using AcDream.Core.Physics.Scenes;

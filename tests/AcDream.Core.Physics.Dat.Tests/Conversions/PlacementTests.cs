@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Dat.Tests.Support;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Types;

@@ -1,7 +1,5 @@
-using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Dat.Tests.Support;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;

@@ -1,11 +1,9 @@
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 using DatPolygon = DatReaderWriter.Types.Polygon;
 using DatSphere = DatReaderWriter.Types.Sphere;
-using Polygon = AcDream.Core.Physics.Polygon;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 

@@ -1,12 +1,9 @@
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.World;
 using DatReaderWriter;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Lib.IO;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
-using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
 

@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
@@ -9,12 +8,8 @@ using DatEnvironment = DatReaderWriter.DBObjs.Environment;
 using DatFrame = DatReaderWriter.Types.Frame;
 using DatLandDefs = DatReaderWriter.Types.LandDefs;
 using DatSphere = DatReaderWriter.Types.Sphere;
-using EnvCell = AcDream.Core.Physics.EnvCell;
 
 namespace AcDream.Core.Physics.Dat.Tests.Support;
-
-/// <summary>What the game (not the DAT) says about a placed object: its id, scale, state and flags.</summary>
-internal readonly record struct ObjectDescription(uint Id, float Scale, PhysicsState State, ShadowFlags Flags);
 
 /// <summary>
 /// A world we trust (a scene's, loaded by the scene loader) written out as the DAT objects retail would

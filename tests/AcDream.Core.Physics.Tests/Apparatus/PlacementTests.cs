@@ -1,4 +1,3 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Apparatus;

@@ -1,5 +1,4 @@
 using System.IO;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Tests.Robustness;
 

@@ -1,10 +1,7 @@
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Diagnostics;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Apparatus;

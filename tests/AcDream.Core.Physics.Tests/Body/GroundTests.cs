@@ -1,11 +1,8 @@
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Body;
 

@@ -1,10 +1,7 @@
 using System.IO;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Body;
 

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Body;

@@ -1,8 +1,5 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

@@ -1,6 +1,5 @@
 using AcDream.Core.Physics.Bench.Compile;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Bsp;

@@ -1,8 +1,6 @@
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
 using static AcDream.Core.Physics.Tests.Bsp.BspTestKit;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

@@ -1,9 +1,6 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.Bsp;

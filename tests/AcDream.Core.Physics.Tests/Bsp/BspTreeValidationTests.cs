@@ -1,7 +1,5 @@
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

@@ -1,6 +1,4 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 
 namespace AcDream.Core.Physics.Tests.Bsp;
 

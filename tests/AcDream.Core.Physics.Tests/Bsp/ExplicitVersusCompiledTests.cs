@@ -1,4 +1,3 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Geometry;

@@ -1,7 +1,4 @@
-using System.Numerics;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Tests.Support;
 

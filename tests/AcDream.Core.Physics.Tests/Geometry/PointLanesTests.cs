@@ -1,5 +1,4 @@
 using System.Runtime.Intrinsics;
-using AcDream.Core.Physics;
 
 namespace AcDream.Core.Physics.Tests.Geometry;
 

@@ -1,6 +1,3 @@
-using System.Runtime.Intrinsics;
-using AcDream.Core.Physics;
-
 namespace AcDream.Core.Physics.Tests.Geometry;
 
 /// <summary>

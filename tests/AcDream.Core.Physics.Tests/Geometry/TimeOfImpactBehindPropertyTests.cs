@@ -1,5 +1,4 @@
 using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Reference;
 using Xunit.Abstractions;
 using static AcDream.Core.Physics.Tests.Reference.RandomSweeps;
 

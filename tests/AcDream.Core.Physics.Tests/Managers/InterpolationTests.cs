@@ -1,4 +1,3 @@
-using System.Numerics;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Motion;

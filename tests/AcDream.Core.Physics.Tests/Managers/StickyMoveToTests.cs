@@ -1,5 +1,4 @@
 using AcDream.Core.Physics.Managers;
-using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Tests.Managers;
 

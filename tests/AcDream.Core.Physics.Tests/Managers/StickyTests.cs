@@ -1,4 +1,3 @@
-using System.Numerics;
 using AcDream.Core.Physics.Managers;
 
 namespace AcDream.Core.Physics.Tests.Managers;

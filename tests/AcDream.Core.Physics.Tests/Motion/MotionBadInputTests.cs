@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Motion;
-
 namespace AcDream.Core.Physics.Tests.Motion;
 
 /// <summary>Bad commands get a clear error naming the field, and nothing the caller owns changes.</summary>

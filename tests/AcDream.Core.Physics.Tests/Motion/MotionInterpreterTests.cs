@@ -1,5 +1,3 @@
-using System.Numerics;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.Motion;

@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Support;
 

@@ -1,5 +1,3 @@
-using System.Numerics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;

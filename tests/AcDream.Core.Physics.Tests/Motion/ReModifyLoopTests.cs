@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-using System.Numerics;
 using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Tests.Motion;

@@ -1,7 +1,4 @@
-using System.Numerics;
 using System.Text.Json;
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Parity;
 using AcDream.Core.Physics.Scenes;
 

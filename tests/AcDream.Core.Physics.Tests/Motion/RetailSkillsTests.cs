@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Motion;
-
 namespace AcDream.Core.Physics.Tests.Motion;
 
 /// <summary>Retail's run rate and jump formulas, hand-computed from the constants (retail-facts, "The motion layer").</summary>

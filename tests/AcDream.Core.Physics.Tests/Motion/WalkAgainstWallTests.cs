@@ -1,4 +1,3 @@
-using System.Numerics;
 using AcDream.Core.Physics.Motion;
 
 namespace AcDream.Core.Physics.Tests.Motion;

@@ -1,9 +1,5 @@
-using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Queries;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Queries;
 

@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Queries;
 using AcDream.Core.Physics.Tests.Support;
 

@@ -1,5 +1,4 @@
 using AcDream.Core.Physics.Diagnostics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Queries;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Support;

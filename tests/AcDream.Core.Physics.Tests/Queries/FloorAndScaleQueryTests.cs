@@ -1,9 +1,7 @@
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Queries;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Queries;
 

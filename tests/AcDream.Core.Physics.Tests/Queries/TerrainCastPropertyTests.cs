@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using AcDream.Core.Physics.Queries;
-using AcDream.Core.Physics.World;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Physics.Tests.Queries;

@@ -1,6 +1,5 @@
 using AcDream.Core.Physics.Queries;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Queries;
 

@@ -1,10 +1,8 @@
 using System.Threading.Tasks;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Queries;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Queries;
 

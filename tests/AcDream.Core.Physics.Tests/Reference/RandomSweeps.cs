@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Geometry;
-
 namespace AcDream.Core.Physics.Tests.Reference;
 
 /// <summary>Seeded random geometry shared by the reference sweep's property tests.</summary>

@@ -1,6 +1,5 @@
 using System.Globalization;
 using System.Text;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.Robustness;

@@ -1,5 +1,4 @@
 using System.Threading.Tasks;
-using AcDream.Core.Physics;
 
 namespace AcDream.Core.Physics.Tests.Robustness;
 

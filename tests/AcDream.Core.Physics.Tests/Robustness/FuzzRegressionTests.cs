@@ -1,8 +1,5 @@
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 

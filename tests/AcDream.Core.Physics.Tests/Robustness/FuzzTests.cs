@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using AcDream.Core.Physics;
 using Xunit.Abstractions;
 
 namespace AcDream.Core.Physics.Tests.Robustness;

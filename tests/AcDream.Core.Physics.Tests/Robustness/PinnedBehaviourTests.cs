@@ -1,12 +1,8 @@
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Managers;
 using AcDream.Core.Physics.Motion;
-using AcDream.Core.Physics.Shapes;
-using AcDream.Core.Physics.Snapshots;
 using AcDream.Core.Physics.Tests.Managers;
 using AcDream.Core.Physics.Tests.Motion;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Robustness;
 

@@ -1,8 +1,6 @@
 using System.Globalization;
 using System.IO;
 using System.Runtime.InteropServices;
-using System.Text;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.Robustness;

@@ -1,11 +1,8 @@
 using System.IO;
-using System.IO.Compression;
 using System.Text;
 using System.Threading;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Validation;
 

@@ -1,7 +1,4 @@
-using System.IO;
 using System.Text.Json.Nodes;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.SceneFiles;

@@ -1,8 +1,4 @@
-using System.IO;
-using System.Numerics;
 using System.Text.Json.Nodes;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Motion;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tests.Support;

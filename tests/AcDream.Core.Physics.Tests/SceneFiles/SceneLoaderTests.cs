@@ -1,6 +1,4 @@
 using System.Text.Json.Nodes;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Scenes;
 
 namespace AcDream.Core.Physics.Tests.SceneFiles;

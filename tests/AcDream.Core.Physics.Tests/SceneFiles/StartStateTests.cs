@@ -1,6 +1,5 @@
 using System.IO;
 using System.Text.Json.Nodes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Scenes;
 using ToolProgram = AcDream.Core.Physics.Tool.Program;
 

@@ -1,5 +1,4 @@
 using System.IO;
-using AcDream.Core.Physics;
 using ToolProgram = AcDream.Core.Physics.Tool.Program;
 using AcDream.Core.Physics.Scenes;
 

@@ -1,5 +1,4 @@
 using System.Text.Json.Nodes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 

@@ -1,6 +1,4 @@
-using AcDream.Core.Physics;
 using static AcDream.Core.Physics.Tests.Shapes.ShapeTestRig;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Transitions.Responses;

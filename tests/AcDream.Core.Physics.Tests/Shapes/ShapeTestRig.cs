@@ -1,5 +1,3 @@
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
 
 namespace AcDream.Core.Physics.Tests.Shapes;

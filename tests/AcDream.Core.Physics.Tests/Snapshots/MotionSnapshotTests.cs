@@ -1,6 +1,4 @@
 using System.IO;
-using AcDream.Core.Physics.Motion;
-using AcDream.Core.Physics.Snapshots;
 using AcDream.Core.Physics.Tests.Motion;
 
 namespace AcDream.Core.Physics.Tests.Snapshots;

@@ -1,12 +1,9 @@
 using System.IO;
 using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Bsp;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Snapshots;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Snapshots;
 

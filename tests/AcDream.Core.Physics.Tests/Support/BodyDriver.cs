@@ -1,5 +1,3 @@
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Tests.Support;

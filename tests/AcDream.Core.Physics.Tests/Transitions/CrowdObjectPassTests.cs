@@ -1,9 +1,6 @@
-using AcDream.Core.Physics.Body;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.Transitions;
-using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.Transitions;
 

@@ -1,7 +1,4 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Diagnostics;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
 
 namespace AcDream.Core.Physics.Tests.Transitions;

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Tests.Bsp;
 using AcDream.Core.Physics.Transitions;
 using AcDream.Core.Physics.Transitions.Responses;

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics.Geometry;
-
 namespace AcDream.Core.Physics.Tests.Validation;
 
 /// <summary>MoverDescription.With: a copy with some fields replaced, the rest kept, checked like a new description.</summary>

@@ -1,12 +1,10 @@
 using System.IO;
 using System.Text.Json;
 using System.Text.RegularExpressions;
-using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Tool;
 using AcDream.Core.Physics.Tool.View;
 using AcDream.Core.Physics.Viewer;
-using AcDream.Core.Physics.World;
 using ToolProgram = AcDream.Core.Physics.Tool.Program;
 
 namespace AcDream.Core.Physics.Tests.Viewer;

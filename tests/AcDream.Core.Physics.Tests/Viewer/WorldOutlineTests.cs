@@ -1,4 +1,3 @@
-using AcDream.Core.Physics.Diagnostics;
 using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.Viewer;
 

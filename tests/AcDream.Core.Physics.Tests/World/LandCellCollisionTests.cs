@@ -1,7 +1,4 @@
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.Transitions;
-using AcDream.Core.Physics.World;
 using AcDream.Core.Physics.Transitions.Responses;
 
 namespace AcDream.Core.Physics.Tests.World;

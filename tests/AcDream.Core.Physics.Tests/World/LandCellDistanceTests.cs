@@ -1,4 +1,3 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.World;

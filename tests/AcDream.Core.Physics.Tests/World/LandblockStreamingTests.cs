@@ -1,8 +1,5 @@
-using AcDream.Core.Physics.Scenes;
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Body;
 using AcDream.Core.Physics.Queries;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
 

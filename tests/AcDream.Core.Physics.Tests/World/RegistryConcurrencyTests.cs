@@ -1,7 +1,5 @@
 using System.Diagnostics;
 using System.Threading;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
 

@@ -1,7 +1,4 @@
-using AcDream.Core.Physics;
 using AcDream.Core.Physics.Tests.Support;
-using AcDream.Core.Physics.Geometry;
-using AcDream.Core.Physics.Shapes;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.World;

@@ -1,5 +1,3 @@
-using AcDream.Core.Physics;
-using AcDream.Core.Physics.Tests.Support;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Tests.World;

@@ -2,7 +2,6 @@ using System.Numerics;
 using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Bsp;
-using AcDream.Core.Physics.Shapes;
 
 namespace AcDream.Core.Physics.Transitions.Responses;
 
