@@ -43,7 +43,7 @@ public static class DatGeometry
     // built only for a message: a landblock's load converts hundreds of polygons and refuses none.
     private static string FieldOf(string owner, int key) => key < 0 ? owner : $"{owner}.polygons[{key}]";
 
-    private static Polygon ConvertPolygon(uint objectId, string owner, int key, DatPolygon polygon, VertexArray vertexArray)
+    internal static Polygon ConvertPolygon(uint objectId, string owner, int key, DatPolygon polygon, VertexArray vertexArray)
     {
         if (polygon is null)
             throw new DatObjectException(objectId, $"{FieldOf(owner, key)}: is null.");
@@ -53,7 +53,8 @@ public static class DatGeometry
         int count = ids?.Count ?? 0;
         if (count < 3 || count > InputLimits.MaxPolygonVertices)
             throw new DatObjectException(objectId, $"{FieldOf(owner, key)}.vertexIds: a polygon has 3 to {InputLimits.MaxPolygonVertices} vertices (InputLimits.MaxPolygonVertices), got {count}.");
-        var vertices = new Vector3[count];
+        // The polygon copies its vertices: gathered on the stack (at most 127 of them).
+        Span<Vector3> vertices = stackalloc Vector3[count];
         for (int i = 0; i < count; i++)
         {
             short id = ids![i];
@@ -102,6 +103,13 @@ public static class DatGeometry
     {
         if (polygons is null)
             throw new DatObjectException(objectId, $"{field}: the polygon list is missing.");
+        return DatBspBuilder.Current.TryPhysics(objectId, field, tree, polygons, vertexArray)
+            ?? CheckedPhysicsBsp(objectId, field, tree, polygons, vertexArray);
+    }
+
+    // The conversion the one-pass builder mirrors, run when the builder gives up: it refuses with the message.
+    private static BspTree CheckedPhysicsBsp(uint objectId, string field, PhysicsBSPTree tree, Dictionary<ushort, DatPolygon> polygons, VertexArray vertexArray)
+    {
         var list = new List<Polygon>(polygons.Count);
         var index = new Dictionary<ushort, int>(polygons.Count);
         foreach (var (id, polygon) in polygons)
@@ -150,7 +158,10 @@ public static class DatGeometry
     /// <param name="field">The tree's path inside the object, e.g. <c>cells[2].cellBSP</c>.</param>
     /// <param name="tree">The DAT tree; its root must be set.</param>
     /// <exception cref="DatObjectException">A node is reached twice, the tree is too large or too deep, a node is a portal node, or the runtime refuses a plane.</exception>
-    public static BspTree ToCellBsp(uint objectId, string field, CellBSPTree tree)
+    public static BspTree ToCellBsp(uint objectId, string field, CellBSPTree tree) =>
+        DatBspBuilder.Current.TryCell(tree) ?? CheckedCellBsp(objectId, field, tree);
+
+    private static BspTree CheckedCellBsp(uint objectId, string field, CellBSPTree tree)
     {
         var order = Flatten(objectId, field, tree?.Root, n => n.PosNode, n => n.NegNode);
         var position = IndexOf(order);

@@ -182,8 +182,21 @@ public sealed class BspTree
         return new BspTree(flat, polygonArray, indices.ToArray());
     }
 
+    /// <summary>
+    /// Wraps arrays that a converter built in this class's flat layout and checked as <see cref="Create"/> would
+    /// (<see cref="PlaneOk"/>, <see cref="BoundsOk"/>, children and polygon indices in range, every node reached
+    /// once, no leaf deeper than <see cref="InputLimits.MaxBspDepth"/>): the DAT package's one-pass conversion.
+    /// Takes ownership of the arrays.
+    /// </summary>
+    internal static BspTree FromChecked(BspNode[] nodes, Polygon[] polygons, int[] polygonIndices) =>
+        new(nodes, polygons, polygonIndices);
+
+    /// <summary>Whether <see cref="Create"/> keeps a given bounding sphere without a refusal (no allocation).</summary>
+    internal static bool BoundsOk(Sphere bounds) =>
+        Guard.IsCoordinate(bounds.Center) && bounds.Radius >= 0f && float.IsFinite(bounds.Radius);
+
     // What CheckPlane accepts, tested first so that its field name is built only for the message.
-    private static bool PlaneOk(Plane plane) =>
+    internal static bool PlaneOk(Plane plane) =>
         Guard.IsCoordinate(plane.Normal) && MathF.Abs(plane.D) <= InputLimits.MaxCoordinate && !(plane.Normal.LengthSquared() < 1e-12f);
 
     private static void CheckPlane(Plane plane, string field)
