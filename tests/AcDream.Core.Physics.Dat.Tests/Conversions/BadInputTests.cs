@@ -115,6 +115,32 @@ public class BadInputTests
     }
 
     [Fact]
+    public void ABrokenSplitPlaneOrSphere_IsRefused_NamingTheNode()
+    {
+        var flat = Box();
+        flat.PhysicsBSP.Root = Internal(flat.PhysicsBSP.Root, null);
+        flat.PhysicsBSP.Root.SplittingPlane = new Plane(Vector3.Zero, 0f);
+        Refused(() => DatModels.ToPhysicsModel(flat), Gfx, "physicsBSP: ", "nodes[0].splitPlane.normal", "zero length");
+
+        var far = Box();
+        far.PhysicsBSP.Root = Internal(far.PhysicsBSP.Root, null);
+        far.PhysicsBSP.Root.SplittingPlane = new Plane(Vector3.UnitZ, float.NaN);
+        Refused(() => DatModels.ToPhysicsModel(far), Gfx, "nodes[0].splitPlane.d");
+
+        var shrunk = Box();
+        shrunk.PhysicsBSP.Root!.BoundingSphere = new DatSphere { Origin = Vector3.Zero, Radius = -1f };
+        Refused(() => DatModels.ToPhysicsModel(shrunk), Gfx, "nodes[0].bounds.radius", "zero or more");
+
+        var lost = Box();
+        lost.PhysicsBSP.Root!.BoundingSphere = new DatSphere { Origin = new Vector3(float.PositiveInfinity, 0, 0), Radius = 1f };
+        Refused(() => DatModels.ToPhysicsModel(lost), Gfx, "nodes[0].bounds.center");
+
+        var cellTree = DatObjects.CellTree(BspShapes.CellBox(Vector3.Zero, Vector3.One));
+        cellTree.Root!.SplittingPlane = new Plane(new Vector3(float.NaN, 0, 1), 0f);
+        Refused(() => DatGeometry.ToCellBsp(0x0D000001, "cells[0].cellBSP", cellTree), 0x0D000001, "cells[0].cellBSP: ", "nodes[0].splitPlane.normal");
+    }
+
+    [Fact]
     public void ASetupWhosePlacementDoesNotMatchItsParts_IsRefused()
     {
         var setup = new Setup { Id = 0x02000050, Parts = [Gfx, Gfx] };

@@ -104,4 +104,57 @@ public class BspThroughDatTests
         Assert.Equal(-Vector3.UnitZ, read.PolygonArray[1].Plane.Normal);
         Assert.Equal([2, 0, 1], read.IndexArray);
     }
+
+    /// <summary>
+    /// Polygon ids that are not their positions (a DAT may number them as it likes): the tree's polygons stay in
+    /// stored order and each leaf's ids become positions in that order.
+    /// </summary>
+    [Fact]
+    public void PolygonIdsThatAreNotTheirPositions_BecomePositionsInStoredOrder()
+    {
+        var faces = BspShapes.BoxPolygons(Vector3.Zero, Vector3.One);
+        var vertices = DatObjects.NewVertexArray();
+        var polygons = new Dictionary<ushort, DatReaderWriter.Types.Polygon>
+        {
+            [9] = DatObjects.Polygon(faces[0], vertices),
+            [2] = DatObjects.Polygon(faces[1], vertices),
+            [40] = DatObjects.Polygon(faces[2], vertices),
+        };
+        var leaf = new DatReaderWriter.Types.PhysicsBSPNode
+        {
+            Type = DatReaderWriter.Enums.BSPNodeType.Leaf,
+            BoundingSphere = new DatReaderWriter.Types.Sphere { Origin = new Vector3(0.5f), Radius = 1f },
+            Polygons = [40, 9, 2, 40],
+        };
+
+        var tree = DatGeometry.ToPhysicsBsp(0x0100_0011, "physicsBSP", new DatReaderWriter.Types.PhysicsBSPTree { Root = leaf }, polygons, vertices);
+
+        Assert.Equal([2, 0, 1, 2], tree.IndexArray);
+        Assert.Equal(faces[0].Vertices.ToArray(), tree.PolygonArray[0].Vertices.ToArray());
+        Assert.Equal(faces[1].Vertices.ToArray(), tree.PolygonArray[1].Vertices.ToArray());
+        Assert.Equal(faces[2].Vertices.ToArray(), tree.PolygonArray[2].Vertices.ToArray());
+        var again = DatGeometry.ToPhysicsBsp(0x0100_0011, "physicsBSP", new DatReaderWriter.Types.PhysicsBSPTree { Root = leaf }, polygons, vertices);
+        Assert.Equal([2, 0, 1, 2], again.IndexArray);
+    }
+
+    /// <summary>
+    /// A valid tree is built by the one-pass builder itself (its checked fallback is for refusals only) and is the
+    /// given tree; a containment tree gets the empty spheres the checked conversion computes for it.
+    /// </summary>
+    [Fact]
+    public void AValidTree_IsBuiltInOnePass_AsTheSameTree()
+    {
+        var box = BspShapes.Box(new Vector3(-1, -2, 0), new Vector3(2, 1, 3));
+        var gfx = DatObjects.GfxObj(0x0100_0012, box);
+        var built = DatBspBuilder.Current.TryPhysics(gfx.Id, "physicsBSP", gfx.PhysicsBSP, gfx.PhysicsPolygons, gfx.VertexArray);
+        Assert.NotNull(built);
+        TreeAssert.Same(box, built!, "box");
+
+        var room = BspShapes.CellBox(new Vector3(-1, -2, 0), new Vector3(2, 1, 3));
+        var cell = DatBspBuilder.Current.TryCell(DatObjects.CellTree(room));
+        Assert.NotNull(cell);
+        TreeAssert.Same(room, cell!, "room", bounds: false);
+        foreach (var node in cell!.NodeArray)
+            Assert.True(node.Bounds.Center == Vector3.Zero && node.Bounds.Radius == 0f, $"room: a containment node's sphere is {node.Bounds}");
+    }
 }
