@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using AcDream.Core.Physics.World;
 
 namespace AcDream.Core.Physics.Transitions;
@@ -10,13 +11,15 @@ namespace AcDream.Core.Physics.Transitions;
 /// own: read in full, the cell costs each mover time in proportion to the pile, and the tick the square of it.
 /// Built for one registry version (every move makes a new one) the first time an engine lists the cell in it;
 /// an engine keeps a few such indexes and reuses their arrays, so nothing is allocated once they have grown.
-/// The cull still tests every object the index names with the registry's own box test and keeps the cell's
-/// order, so it lists exactly the objects the full read would, in the same order.
+/// The index keeps each object's reach box beside its place in the west-edge order and tests the objects of the
+/// region's band there with the registry's own box test, so only the objects that meet the region are looked up
+/// in the cell and put back in the cell's order: it names exactly the objects the full read would, in the same
+/// order.
 /// </summary>
 /// <remarks>
 /// Shortcut <see cref="Shortcuts.CellObjectIndex"/> (not retail; taken in <see cref="ObjectCull"/>). Skips: reading
 /// every object of a crowded cell to list the cull's candidates. Same result: the very list, in the very order
-/// (above). Proof: CrowdObjectPassTests and the crowd replays, and the suite with shortcuts off.
+/// (above). Proof: CellObjectIndexTests, CrowdObjectPassTests and the crowd replays, and the suite with shortcuts off.
 /// </remarks>
 internal sealed class CellObjectIndex
 {
@@ -26,9 +29,11 @@ internal sealed class CellObjectIndex
     /// <summary>Objects whose reach box is wider (west to east) than this are kept apart and always read.</summary>
     private const float WideObject = 6f;
 
-    // The narrow objects' slot indices, sorted by their reach boxes' west edge, and the edges.
+    // The narrow objects' slot indices, sorted by their reach boxes' west edge, the edges, and beside each its
+    // reach box (the slot's, copied: the band is tested here, in order, without reading the cell's list).
     private int[] _order = new int[64];
     private float[] _west = new float[64];
+    private ObjectCull.ReachBox[] _box = new ObjectCull.ReachBox[64];
     private int _narrow;
     // The widest narrow object's box (west to east), and the wide objects' slot indices (ascending).
     private float _width;
@@ -50,6 +55,7 @@ internal sealed class CellObjectIndex
         {
             _order = new int[slots.Length * 2];
             _west = new float[slots.Length * 2];
+            _box = new ObjectCull.ReachBox[slots.Length * 2];
         }
         _narrow = 0;
         _wideCount = 0;
@@ -72,25 +78,37 @@ internal sealed class CellObjectIndex
             _narrow++;
         }
         Array.Sort(_west, _order, 0, _narrow);
+        for (int k = 0; k < _narrow; k++)
+        {
+            ref readonly var slot = ref slots[_order[k]];
+            _box[k] = new ObjectCull.ReachBox(slot.ReachMin, slot.ReachMax);
+        }
     }
 
     /// <summary>
-    /// Writes to <paramref name="found"/>, in ascending slot order, every object whose reach box may meet the box
-    /// west..east on X (a superset: the caller tests each with the exact box test); returns how many.
-    /// <paramref name="found"/> must hold the cell's object count.
+    /// Writes to <paramref name="found"/>, in ascending slot order, every object of <paramref name="slots"/> (the
+    /// list the index was built from) whose reach box meets <paramref name="min"/>..<paramref name="max"/> by the
+    /// registry's box test (<see cref="ObjectCull.ReachBox.Meets"/>); returns how many. <paramref name="found"/>
+    /// must hold the cell's object count.
     /// </summary>
-    public int MayMeet(float west, float east, Span<int> found)
+    public int Meeting(Vector3 min, Vector3 max, ReadOnlySpan<ShadowObjectRegistry.Slot> slots, Span<int> found)
     {
-        // An object meets west..east on X only if its box's west edge is at most east and its east edge at least
-        // west, so its west edge is at least west less its width. The margin covers the rounding of the
-        // widths (coordinates within a few hundred metres: an ulp is below 1e-4 m).
-        float from = west - _width - 0.01f;
+        // An object meets min..max on X only if its box's west edge is at most max.X and its east edge at least
+        // min.X, so its west edge is at least min.X less its width: the objects before that edge and after max.X
+        // fail the box test and are not read. The margin covers the rounding of the widths (coordinates within a
+        // few hundred metres: an ulp is below 1e-4 m).
+        float from = min.X - _width - 0.01f;
         int lo = LowerBound(from);
         int n = 0;
-        for (int k = lo; k < _narrow && _west[k] <= east; k++)
-            found[n++] = _order[k];
+        for (int k = lo; k < _narrow && _west[k] <= max.X; k++)
+            if (_box[k].Meets(min, max))
+                found[n++] = _order[k];
         for (int w = 0; w < _wideCount; w++)
-            found[n++] = _wide[w];
+        {
+            ref readonly var slot = ref slots[_wide[w]];
+            if (new ObjectCull.ReachBox(slot.ReachMin, slot.ReachMax).Meets(min, max))
+                found[n++] = _wide[w];
+        }
         // Not-a-number bounds (never expected: the region is checked finite) find nothing here; the caller
         // falls back to the full read for them.
         found[..n].Sort();
