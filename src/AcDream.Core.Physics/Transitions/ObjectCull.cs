@@ -254,7 +254,7 @@ internal sealed class ObjectCull
         var max = _max + toCell;
         int start = _used;
         var slots = objects.Slots;
-        if (indexed && slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X) && float.IsFinite(max.X))
+        if (indexed && slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X + min.Y) && float.IsFinite(max.X + max.Y))
         {
             // A crowded cell: only the objects its index names are tested, in the cell's order (see CellObjectIndex).
             var index = IndexOf(cellId, slots);
