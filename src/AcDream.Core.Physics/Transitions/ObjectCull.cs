@@ -192,10 +192,17 @@ internal sealed class ObjectCull
     private void AddIfReaches(ReadOnlySpan<ShadowObjectRegistry.Slot> slots, int i, Vector3 min, Vector3 max)
     {
         ref readonly var slot = ref slots[i];
-        if (!(slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
+        if (slot.ReachMin.X <= max.X && slot.ReachMax.X >= min.X
             && slot.ReachMin.Y <= max.Y && slot.ReachMax.Y >= min.Y
-            && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z))
-            return;
+            && slot.ReachMin.Z <= max.Z && slot.ReachMax.Z >= min.Z)
+            Add(slots, i);
+    }
+
+    /// <summary>Lists object <paramref name="i"/> of the cell (its reach box known to meet the region).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void Add(ReadOnlySpan<ShadowObjectRegistry.Slot> slots, int i)
+    {
+        ref readonly var slot = ref slots[i];
         if (_used == _candidates.Length)
         {
             Array.Resize(ref _candidates, _used * 2);
@@ -247,15 +254,15 @@ internal sealed class ObjectCull
         var max = _max + toCell;
         int start = _used;
         var slots = objects.Slots;
-        if (indexed && slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X) && float.IsFinite(max.X))
+        if (indexed && slots.Length >= CellObjectIndex.MinObjects && float.IsFinite(min.X + min.Y) && float.IsFinite(max.X + max.Y))
         {
             // A crowded cell: only the objects its index names are tested, in the cell's order (see CellObjectIndex).
             var index = IndexOf(cellId, slots);
             if (_found.Length < slots.Length)
                 _found = new int[slots.Length * 2];
-            int n = index.MayMeet(min.X, max.X, _found);
+            int n = index.Meeting(min, max, slots, _found);
             for (int j = 0; j < n; j++)
-                AddIfReaches(slots, _found[j], min, max);
+                Add(slots, _found[j]);
         }
         else
         {
