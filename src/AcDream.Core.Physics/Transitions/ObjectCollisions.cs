@@ -288,8 +288,9 @@ internal static class ObjectCollisions
                 // Shortcut PolygonBoxPreCheck (not retail). Skips: a part whose polygons' box no check sphere
                 // reaches, in a move's insert. Same result: every branch of the query needs a polygon within a
                 // sphere's radius before it changes anything (see PartCollision.MayTouchPolygons). Proof:
-                // PolygonBoxTests, and the suite with shortcuts off.
-                if ((transition.Shortcuts & Shortcuts.PolygonBoxPreCheck) != 0 && !PartCollision.MayTouchPolygons(path, row))
+                // PolygonBoxTests, and the suite with shortcuts off. The flag is read only when the box would skip
+                // (the box test is pure: with the shortcut off its answer is dropped).
+                if (!PartCollision.MayTouchPolygons(path, row) && (transition.Shortcuts & Shortcuts.PolygonBoxPreCheck) != 0)
                     return TransitionState.OK;
                 return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:
