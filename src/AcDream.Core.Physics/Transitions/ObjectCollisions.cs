@@ -86,6 +86,8 @@ internal static class ObjectCollisions
         if (transition.Observer is not null || (transition.Shortcuts & cullAndPreCheck) != cullAndPreCheck)
             return FindInCellInGeneral(transition, cellId);
         var candidates = transition.Cull.CandidateRows(transition, cellId, out var reach);
+        if (candidates.Length == 0)
+            return TransitionState.OK;
         var path = transition.SpherePath;
         bool boxValid = false;
         Vector3 min = default, max = default;
