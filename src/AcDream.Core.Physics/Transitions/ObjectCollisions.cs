@@ -80,6 +80,43 @@ internal static class ObjectCollisions
     {
         if (transition.SpherePath.InsertType == InsertType.InitialPlacement)
             return TransitionState.OK;
+        // The usual case, tested at once: no observer and both shortcuts of this pass on. Its loop is the general
+        // one below with those three tests answered (the same objects tested in the same order).
+        const Shortcuts cullAndPreCheck = Shortcuts.ObjectCull | Shortcuts.ReachBoxPreCheck;
+        if (transition.Observer is not null || (transition.Shortcuts & cullAndPreCheck) != cullAndPreCheck)
+            return FindInCellInGeneral(transition, cellId);
+        var candidates = transition.Cull.CandidateRows(transition, cellId, out var reach);
+        if (candidates.Length == 0)
+            return TransitionState.OK;
+        var path = transition.SpherePath;
+        bool boxValid = false;
+        Vector3 min = default, max = default;
+        for (int i = 0; i < candidates.Length; i++)
+        {
+            if (!boxValid)
+            {
+                ObjectCull.SpheresBox(path, out min, out max);
+                var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
+                min += toCell;
+                max += toCell;
+                boxValid = true;
+            }
+            if (!reach[i].Meets(min, max))
+                continue;
+            var state = FindObjectCollisionsUnlessSelf(transition, candidates[i]);
+            if (state != TransitionState.OK)
+                return state;
+            boxValid = false;
+        }
+        return TransitionState.OK;
+    }
+
+    /// <summary>
+    /// <see cref="FindInCell"/> with an observer or with <see cref="Shortcuts.ObjectCull"/> or
+    /// <see cref="Shortcuts.ReachBoxPreCheck"/> off: each of those is tested as it comes.
+    /// </summary>
+    private static TransitionState FindInCellInGeneral(Transition transition, uint cellId)
+    {
         var observer = transition.Observer;
         // Shortcut ObjectCull (not retail). Skips: the objects of the cell whose reach box misses a region
         // around the check spheres (see ObjectCull). Same result: for each, every retail test returns OK and
@@ -253,8 +290,9 @@ internal static class ObjectCollisions
                 // Shortcut PolygonBoxPreCheck (not retail). Skips: a part whose polygons' box no check sphere
                 // reaches, in a move's insert. Same result: every branch of the query needs a polygon within a
                 // sphere's radius before it changes anything (see PartCollision.MayTouchPolygons). Proof:
-                // PolygonBoxTests, and the suite with shortcuts off.
-                if ((transition.Shortcuts & Shortcuts.PolygonBoxPreCheck) != 0 && !PartCollision.MayTouchPolygons(path, row))
+                // PolygonBoxTests, and the suite with shortcuts off. The flag is read only when the box would skip
+                // (the box test is pure: with the shortcut off its answer is dropped).
+                if (!PartCollision.MayTouchPolygons(path, row) && (transition.Shortcuts & Shortcuts.PolygonBoxPreCheck) != 0)
                     return TransitionState.OK;
                 return PartCollision.Collide(transition, shape.Model!, row.PartPosition, shape.ModelScale);
             case ShadowShapeKind.Cylinder:

@@ -1,4 +1,5 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using AcDream.Core.Physics.Geometry;
 using AcDream.Core.Physics.World;
 using AcDream.Core.Physics.Transitions.Responses;
@@ -246,11 +247,22 @@ internal sealed partial class Transition
     /// </summary>
     internal TransitionState FindCollisions(Cell cell)
     {
-        // The cell kinds are two sealed classes: testing the kind here calls the cell's own routine directly.
-        var state = cell is LandCell land ? CellCollisions.FindEnvCollisions(land, this) : CellCollisions.FindEnvCollisions((EnvCell)cell, this);
+        // The cell kinds are two sealed classes (Cell's constructor is private protected): one test of the kind
+        // calls the cell's own routine directly, and a cell that is not a land cell is an env cell.
+        TransitionState state;
+        Building? building = null;
+        if (cell is LandCell land)
+        {
+            state = CellCollisions.FindEnvCollisions(land, this);
+            building = land.Building;
+        }
+        else
+        {
+            state = CellCollisions.FindEnvCollisions(Unsafe.As<EnvCell>(cell), this);
+        }
         if (state != TransitionState.OK)
             return state;
-        if (cell is LandCell { Building: { } building })
+        if (building is not null)
         {
             state = CellCollisions.FindBuildingCollisions(building, this);
             if (state != TransitionState.OK)

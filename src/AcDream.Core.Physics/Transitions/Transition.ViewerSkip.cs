@@ -76,6 +76,7 @@ internal sealed partial class Transition
         // offset, zero, added), and passes only while the cell holds the centre (the sphere centre is the
         // origin: the viewer's sphere sits at the mover's origin).
         var origin = path.CheckPos.Frame.Origin;
+        var observer = Observer;
         if (land is not null)
         {
             if (path.LocalSphere[0].Center != Vector3.Zero)
@@ -87,7 +88,7 @@ internal sealed partial class Transition
                 var next = origin + perStep + relabel;
                 if (!land.ContainsPoint(next))
                     break;
-                Observer?.OnSubStep(held, origin, perStep);
+                observer?.OnSubStep(held, origin, perStep);
                 origin = next;
                 held++;
             }
@@ -95,11 +96,16 @@ internal sealed partial class Transition
             if (count <= 0)
                 return 0;
         }
+        else if (observer is null)
+        {
+            for (int i = 0; i < count; i++)
+                origin += perStep;
+        }
         else
         {
             for (int i = 0; i < count; i++)
             {
-                Observer?.OnSubStep(i, origin, perStep);
+                observer.OnSubStep(i, origin, perStep);
                 origin += perStep;
             }
         }
@@ -111,7 +117,7 @@ internal sealed partial class Transition
         CellArray.Add(cell);
         path.HitsInteriorCell = land is null;
         SetCurrentCheckPos();
-        Observer?.OnShortcutSkip(ShortcutSkip.ViewerSubSteps, count);
+        observer?.OnShortcutSkip(ShortcutSkip.ViewerSubSteps, count);
         return count;
     }
 

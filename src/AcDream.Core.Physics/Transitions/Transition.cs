@@ -296,11 +296,10 @@ internal sealed partial class Transition
         float radius = mover.Spheres[0].Radius * mover.Scale;
         bool isViewer = (mover.Flags & ObjectInfoState.IsViewer) != 0;
         int numSteps = CalcNumSteps(offset, radius * _subStepScale, isViewer, out var perStep);
-        bool early = (Shortcuts & Shortcuts.EarlyRefusal) != 0;
-        if (isViewer || numSteps <= 0 || numSteps > PhysicsConstants.MaxSubSteps || !early)
+        if (isViewer || numSteps <= 0 || numSteps > PhysicsConstants.MaxSubSteps || (Shortcuts & Shortcuts.EarlyRefusal) == 0)
         {
             plan = new StepPlan { Offset = offset, PerStep = perStep, NumSteps = numSteps };
-            return early && !isViewer && numSteps > PhysicsConstants.MaxSubSteps;
+            return !isViewer && numSteps > PhysicsConstants.MaxSubSteps && (Shortcuts & Shortcuts.EarlyRefusal) != 0;
         }
         // As Prepare carries them into the collision info: the sliding normal's horizontal unit (zero
         // when none), the contact plane when in contact.
@@ -466,9 +465,7 @@ internal sealed partial class Transition
         path.HitsInteriorCell = false;
         if (_aloneCell is not null && CellAloneAtCheck(findContaining, out var holder))
             return holder;
-        var found = World.Cells.FindCellList(path.CheckPos, path.GlobalSphere[..path.NumSphere], CellArray, findContaining, out bool hitsInteriorCell);
-        path.HitsInteriorCell = hitsInteriorCell;
-        return found;
+        return World.Cells.FindCellList(path.CheckPos, path.GlobalSphere[..path.NumSphere], CellArray, findContaining, out path.HitsInteriorCell);
     }
 
     /// <summary>Sets the contact plane carried from the previous frame (retail init_contact_plane).</summary>
