@@ -95,10 +95,7 @@ internal static class ObjectCollisions
         {
             if (!boxValid)
             {
-                ObjectCull.SpheresBox(path, out min, out max);
-                var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
-                min += toCell;
-                max += toCell;
+                ObjectCull.SpheresBoxIn(path, cellId, out min, out max);
                 boxValid = true;
             }
             if (!reach[i].Meets(min, max))
@@ -150,10 +147,7 @@ internal static class ObjectCollisions
             {
                 if (!boxValid)
                 {
-                    ObjectCull.SpheresBox(path, out min, out max);
-                    var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
-                    min += toCell;
-                    max += toCell;
+                    ObjectCull.SpheresBoxIn(path, cellId, out min, out max);
                     boxValid = true;
                 }
                 if (!reach[i].Meets(min, max))

@@ -125,6 +125,17 @@ internal sealed class ObjectCull
         }
     }
 
+    /// <summary>The check spheres' box moved into the landblock space of <paramref name="cellId"/> (the space of that
+    /// cell's reach boxes), for the object pass's pre-check.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static void SpheresBoxIn(SpherePath path, uint cellId, out Vector3 min, out Vector3 max)
+    {
+        SpheresBox(path, out min, out max);
+        var toCell = LandDefs.BlockOffset(cellId, path.CheckPos.CellId);
+        min += toCell;
+        max += toCell;
+    }
+
     private void EnsureRegionHolds(Transition transition)
     {
         var path = transition.SpherePath;
