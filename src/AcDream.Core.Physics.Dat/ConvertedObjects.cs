@@ -23,8 +23,14 @@ public sealed class ConvertedObjects
     public T GetOrAdd<T>(uint id, Func<uint, T> convert) where T : class
     {
         ArgumentNullException.ThrowIfNull(convert);
+        return GetOrAdd(id, convert, static (i, c) => c(i));
+    }
+
+    /// <summary>As <see cref="GetOrAdd{T}(uint, Func{uint, T})"/>, the conversion given what it needs: no closure is made unless it runs.</summary>
+    internal T GetOrAdd<T, TState>(uint id, TState state, Func<uint, TState, T> convert) where T : class
+    {
         var key = (typeof(T), id);
-        var entry = _objects.GetOrAdd(key, static (k, c) => new Lazy<object>(() => c(k.Id), LazyThreadSafetyMode.ExecutionAndPublication), convert);
+        var entry = _objects.GetOrAdd(key, static (k, a) => new Lazy<object>(() => a.convert(k.Id, a.state), LazyThreadSafetyMode.ExecutionAndPublication), (convert, state));
         try
         {
             return (T)entry.Value;
@@ -35,6 +41,18 @@ public sealed class ConvertedObjects
             _objects.TryRemove(new System.Collections.Generic.KeyValuePair<(Type, uint), Lazy<object>>(key, entry));
             throw;
         }
+    }
+
+    /// <summary>The <typeparamref name="T"/> of this id when it is held and converted, without converting anything.</summary>
+    internal bool TryGet<T>(uint id, [System.Diagnostics.CodeAnalysis.NotNullWhen(true)] out T? value) where T : class
+    {
+        if (_objects.TryGetValue((typeof(T), id), out var entry) && entry.IsValueCreated)
+        {
+            value = (T)entry.Value;
+            return true;
+        }
+        value = null;
+        return false;
     }
 
     /// <summary>Whether a <typeparamref name="T"/> of this id is held.</summary>

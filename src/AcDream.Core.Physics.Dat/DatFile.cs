@@ -100,6 +100,9 @@ internal sealed class DatFile : IDisposable
         _ => $"type {(uint)type}",
     };
 
+    /// <summary>Told the id of every object about to be unpacked (tests count the reads a load makes through it).</summary>
+    internal Action<uint>? Unpacking { get; set; }
+
     /// <summary>Whether the file holds an object with this id.</summary>
     public bool Contains(uint id)
     {
@@ -124,6 +127,7 @@ internal sealed class DatFile : IDisposable
                 throw new DatReadException(Name, id, $"is a {actual}, not a {kind.DBObjType}.");
             if (entry.Size > MaxObjectBytes)
                 throw new DatReadException(Name, id, $"is {entry.Size} bytes, more than the {MaxObjectBytes} read.");
+            Unpacking?.Invoke(id);
             try
             {
                 if (_database.TryGet<T>(id, out var value) && value is not null)

@@ -59,6 +59,9 @@ public sealed class DatFiles : IDisposable
     /// <summary>The cell DAT's file name, as messages name it.</summary>
     public string CellName => _cell.Name;
 
+    /// <summary>The portal DAT itself (tests watch its reads).</summary>
+    internal DatFile Portal => _portal;
+
     /// <summary>The objects converted from these files, shared by every world made from them.</summary>
     public ConvertedObjects Converted { get; } = new();
 

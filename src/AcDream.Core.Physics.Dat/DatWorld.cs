@@ -92,6 +92,11 @@ public sealed class DatWorld
             throw new DatObjectException(info.Id, $"numCells: {info.NumCells} cells do not fit a landblock (at most {0xFFFE - 0x0100}).");
         var datCells = new DatEnvCell[cellCount];
         var envCells = new EnvCell[cellCount];
+        // The Environments this load has read. A landblock's cells share them (the cells of one building are
+        // structures of one Environment) and DatReaderWriter unpacks an Environment whole, every structure of it,
+        // so each is read at most once per load. Made on the first structure not yet converted: a load whose
+        // structures are all converted already reads none and makes none.
+        Dictionary<uint, DatEnvironment>? environments = null;
         // Retail numbers a landblock's cells 0x0100 to 0x0100 + num_cells - 1 (CLandBlockInfo's num_cells); a DAT
         // holding only some of a landblock's cells under their own ids (a fixture) is read by skipping the gaps.
         uint next = 0x0100;
@@ -102,7 +107,7 @@ public sealed class DatWorld
             if (next >= 0xFFFE)
                 throw new DatObjectException(info!.Id, $"numCells: {info.NumCells} cells, but {Files.CellName} holds only {i} from 0x{prefix | 0x0100:X8} up.");
             var datCell = datCells[i] = Files.ReadCell<DatEnvCell>(prefix | next++);
-            envCells[i] = DatCells.ToEnvCell(datCell, CellStructure(DatCells.EnvironmentIdOf(datCell), datCell.CellStructure));
+            envCells[i] = DatCells.ToEnvCell(datCell, CellStructure(DatCells.EnvironmentIdOf(datCell), datCell.CellStructure, ref environments));
         }
 
         int buildingCount = info?.Buildings?.Count ?? 0;
@@ -245,13 +250,26 @@ public sealed class DatWorld
             ? DatSetups.FromModel(Model(id))
             : DatSetups.ToPhysicsSetup(Files.ReadPortal<Setup>(id), Model));
 
-    private DatCellStructure CellStructure(uint environmentId, uint index)
+    private DatCellStructure CellStructure(uint environmentId, ushort index, ref Dictionary<uint, DatEnvironment>? environments)
     {
-        if (index > 0xFFFF)
-            return DatCells.ToCellStructure(Files.ReadPortal<DatEnvironment>(environmentId), index);
         // One cache key per structure: the environment's low 16 bits and the structure's index.
-        return Files.Converted.GetOrAdd((environmentId & 0xFFFF) << 16 | index,
-            _ => DatCells.ToCellStructure(Files.ReadPortal<DatEnvironment>(environmentId), index));
+        uint key = (environmentId & 0xFFFF) << 16 | index;
+        if (Files.Converted.TryGet(key, out DatCellStructure? converted))
+            return converted;
+        var environment = EnvironmentOfLoad(environmentId, ref environments);
+        return Files.Converted.GetOrAdd(key, (environment, index), static (_, s) => DatCells.ToCellStructure(s.environment, s.index));
+    }
+
+    // The Environment as this load read it, reading it on the load's first request.
+    private DatEnvironment EnvironmentOfLoad(uint environmentId, ref Dictionary<uint, DatEnvironment>? environments)
+    {
+        environments ??= new Dictionary<uint, DatEnvironment>();
+        if (!environments.TryGetValue(environmentId, out var environment))
+        {
+            environment = Files.ReadPortal<DatEnvironment>(environmentId);
+            environments.Add(environmentId, environment);
+        }
+        return environment;
     }
 
     private DatLandDefs LandDefs() =>
