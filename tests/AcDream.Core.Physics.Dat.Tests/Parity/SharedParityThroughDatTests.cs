@@ -21,6 +21,11 @@ public class SharedParityThroughDatTests
     {
         var set = ParityReader.ReadFile(Path.Combine(SharedFolders.Find(folder)!, file));
         var datSet = set with { World = DatPath.Through(set.World) };
+        // The DAT holds each landblock's env cells 0x0100 up without gaps (the cells the scene lacks as fillers).
+        var envIds = datSet.World.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).ToList();
+        Assert.Subset(envIds.ToHashSet(), set.World.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).ToHashSet());
+        foreach (var block in envIds.GroupBy(id => id >> 16))
+            Assert.Equal(Enumerable.Range(0x0100, block.Count()).Select(i => block.Key << 16 | (uint)i), block.Order());
         var sceneEngine = new PhysicsEngine(set.World);
         var datEngine = new PhysicsEngine(datSet.World);
         int frames = 0;
