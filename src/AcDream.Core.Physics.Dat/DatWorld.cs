@@ -108,8 +108,9 @@ public sealed class DatWorld
         for (int i = 0; i < buildingCount; i++)
         {
             uint modelId = info!.Buildings[i].ModelId;
-            var shell = Model(modelId) ?? throw new DatObjectException(info.Id, $"buildings[{i}].modelId: GfxObj 0x{modelId:X8} has no physics, so no shell.");
-            buildings[i] = DatLandblocks.ToBuilding(info, i, shell);
+            buildings[i] = (modelId >> 24) == 0x02
+                ? DatLandblocks.ToBuilding(info, i, Setup(modelId))
+                : DatLandblocks.ToBuilding(info, i, Model(modelId) ?? throw new DatObjectException(info.Id, $"buildings[{i}].modelId: GfxObj 0x{modelId:X8} has no physics, so no shell."));
         }
 
         var placements = new List<(uint Owner, int Index, DatPlacement Placement)>();
