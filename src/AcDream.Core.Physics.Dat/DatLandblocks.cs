@@ -52,8 +52,42 @@ public static class DatLandblocks
     /// <exception cref="DatObjectException">The index is out of range, a count is beyond the limits, or the runtime refuses the building; the message names the LandBlockInfo id.</exception>
     public static Building ToBuilding(LandBlockInfo info, int index, PhysicsModel shell)
     {
-        ArgumentNullException.ThrowIfNull(info);
         ArgumentNullException.ThrowIfNull(shell);
+        return ToBuilding(info, index, shell, Frame.Identity, combine: false);
+    }
+
+    /// <summary>
+    /// Building <paramref name="index"/> of the landblock whose <c>ModelId</c> is a Setup (0x02…): retail makes the
+    /// building's part array from the setup (<c>CBuildingObj::makeBuilding</c> → <c>CPhysicsObj::InitPartArrayObject</c>
+    /// → <c>CPartArray::CreateSetup</c>; acclient.c 719152, 319645, 326946) but collides only its first part
+    /// (<c>CBuildingObj::find_building_collisions</c>, acclient.c 719115: <c>parts[0]</c>; ACE's
+    /// <c>BuildingObj.find_building_collisions</c> the same), so the shell is part 0's model, placed at the building's
+    /// frame combined with part 0's placement frame (<see cref="Frame.Combine"/>, retail <c>Frame::combine</c> for
+    /// an object's parts). The other parts and the setup's spheres and cylinder-spheres take no part in collisions.
+    /// Otherwise as <see cref="ToBuilding(LandBlockInfo, int, PhysicsModel)"/>.
+    /// </summary>
+    /// <param name="info">The LandBlockInfo as read.</param>
+    /// <param name="index">The building's index in <c>Buildings</c>.</param>
+    /// <param name="setup">The setup of the building's <c>ModelId</c> (<see cref="DatSetups.ToPhysicsSetup"/>).</param>
+    /// <exception cref="DatObjectException">As the other overload, or the setup has no parts, its first part no physics, or a default scale other than 1 (a <see cref="Building"/> collides its shell at scale 1); the message names the LandBlockInfo id.</exception>
+    public static Building ToBuilding(LandBlockInfo info, int index, PhysicsSetup setup)
+    {
+        ArgumentNullException.ThrowIfNull(info);
+        ArgumentNullException.ThrowIfNull(setup);
+        uint modelId = index >= 0 && index < (info.Buildings?.Count ?? 0) ? info.Buildings![index]?.ModelId ?? 0 : 0;
+        if (setup.Parts.Count == 0)
+            throw new DatObjectException(info.Id, $"buildings[{index}].modelId: Setup 0x{modelId:X8} has no parts; a building collides by its first part.");
+        var part = setup.Parts[0];
+        if (part.Model is null)
+            throw new DatObjectException(info.Id, $"buildings[{index}].modelId: Setup 0x{modelId:X8}'s first part has no physics, so no shell.");
+        if (part.DefaultScale != 1f)
+            throw new DatObjectException(info.Id, $"buildings[{index}].modelId: Setup 0x{modelId:X8}'s first part has default scale {part.DefaultScale}; a building's shell is collided at scale 1.");
+        return ToBuilding(info, index, part.Model, part.Frame, combine: true);
+    }
+
+    private static Building ToBuilding(LandBlockInfo info, int index, PhysicsModel shell, Frame partFrame, bool combine)
+    {
+        ArgumentNullException.ThrowIfNull(info);
         int count = info.Buildings?.Count ?? 0;
         if (count > MaxBuildings)
             throw new DatObjectException(info.Id, $"buildings: a landblock has at most {MaxBuildings} buildings (DatLandblocks.MaxBuildings), got {count}.");
@@ -61,6 +95,8 @@ public static class DatLandblocks
             throw new DatObjectException(info.Id, $"buildings[{index}]: the landblock has {count} buildings.");
         var building = info.Buildings![index] ?? throw new DatObjectException(info.Id, $"buildings[{index}]: is null.");
         var position = Outdoor(info.Id, building.Frame, $"buildings[{index}].frame");
+        if (combine)
+            position.Frame = position.Frame.Combine(partFrame);
         var portals = building.Portals;
         if ((portals?.Count ?? 0) > MaxBuildingPortals)
             throw new DatObjectException(info.Id, $"buildings[{index}].portals: a building has at most {MaxBuildingPortals} portals, got {portals!.Count}.");

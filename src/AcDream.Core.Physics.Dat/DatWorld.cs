@@ -9,8 +9,8 @@ namespace AcDream.Core.Physics.Dat;
 
 /// <summary>
 /// A <see cref="PhysicsWorld"/> filled from the retail DAT files, landblock by landblock: the terrain (LandBlock
-/// 0xXXYYFFFF through the Region's height table), the env cells (the first ones from 0xXXYY0100 up, as many as the
-/// LandBlockInfo counts) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
+/// 0xXXYYFFFF through the Region's height table), the env cells (0xXXYY0100 up, as many as the LandBlockInfo counts,
+/// every one present) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
 /// the env cells'). A landblock is loaded whole or not at all: anything missing or refused throws (a
 /// <see cref="DatReadException"/> or <see cref="DatObjectException"/> naming the DAT file and object id) and the
 /// world is left as it was. Models, setups, cell structures and the height table are converted once and kept in
@@ -97,16 +97,14 @@ public sealed class DatWorld
         // so each is read at most once per load. Made on the first structure not yet converted: a load whose
         // structures are all converted already reads none and makes none.
         Dictionary<uint, DatEnvironment>? environments = null;
-        // Retail numbers a landblock's cells 0x0100 to 0x0100 + num_cells - 1 (CLandBlockInfo's num_cells); a DAT
-        // holding only some of a landblock's cells under their own ids (a fixture) is read by skipping the gaps.
-        uint next = 0x0100;
+        // A landblock's env cells are 0x0100 to 0x0100 + num_cells - 1, every one present (CLandBlockInfo::num_cells,
+        // the first field CLandBlockInfo::UnPack reads; ACE's Landblock.get_envcells and AdjustCell read them so).
         for (int i = 0; i < cellCount; i++)
         {
-            while (next < 0xFFFE && !Files.CellContains(prefix | next))
-                next++;
-            if (next >= 0xFFFE)
-                throw new DatObjectException(info!.Id, $"numCells: {info.NumCells} cells, but {Files.CellName} holds only {i} from 0x{prefix | 0x0100:X8} up.");
-            var datCell = datCells[i] = Files.ReadCell<DatEnvCell>(prefix | next++);
+            uint id = prefix | (0x0100u + (uint)i);
+            if (!Files.CellContains(id))
+                throw new DatObjectException(info!.Id, $"numCells: {info.NumCells} cells (0x{prefix | 0x0100:X8} up), but {Files.CellName} has no env cell 0x{id:X8}.");
+            var datCell = datCells[i] = Files.ReadCell<DatEnvCell>(id);
             envCells[i] = DatCells.ToEnvCell(datCell, CellStructure(DatCells.EnvironmentIdOf(datCell), datCell.CellStructure, ref environments));
         }
 
@@ -115,8 +113,9 @@ public sealed class DatWorld
         for (int i = 0; i < buildingCount; i++)
         {
             uint modelId = info!.Buildings[i].ModelId;
-            var shell = Model(modelId) ?? throw new DatObjectException(info.Id, $"buildings[{i}].modelId: GfxObj 0x{modelId:X8} has no physics, so no shell.");
-            buildings[i] = DatLandblocks.ToBuilding(info, i, shell);
+            buildings[i] = (modelId >> 24) == 0x02
+                ? DatLandblocks.ToBuilding(info, i, Setup(modelId))
+                : DatLandblocks.ToBuilding(info, i, Model(modelId) ?? throw new DatObjectException(info.Id, $"buildings[{i}].modelId: GfxObj 0x{modelId:X8} has no physics, so no shell."));
         }
 
         var placements = new List<(uint Owner, int Index, DatPlacement Placement)>();

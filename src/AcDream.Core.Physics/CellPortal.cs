@@ -18,7 +18,12 @@ public sealed class CellPortal
     /// <summary>Creates a portal.</summary>
     /// <param name="polygon">The opening, in the owning cell's space.</param>
     /// <param name="otherCellId">The full id of the cell behind it, or <see cref="Outside"/>.</param>
-    /// <param name="portalSide">Retail portal_side: true when the owning cell lies on the polygon's front.</param>
+    /// <param name="portalSide">
+    /// Retail portal_side (<c>CCellPortal::UnPack</c>: <c>!(flags &amp; 2)</c>): true when the owning cell lies behind
+    /// the polygon (on its back side; the other cell in front), false when it lies in front. Retail reads it only where
+    /// the other cell is not loaded and where an object's parts cross a portal (<c>CEnvCell::find_transit_cells</c>,
+    /// <c>check_building_transit</c>); this library's cell search does not read it.
+    /// </param>
     public CellPortal(Polygon polygon, uint otherCellId, bool portalSide)
     {
         Polygon = polygon ?? throw new ArgumentNullException(nameof(polygon));
@@ -30,7 +35,7 @@ public sealed class CellPortal
     public Polygon Polygon { get; }
     /// <summary>The cell behind the opening (full id), or <see cref="Outside"/>.</summary>
     public uint OtherCellId { get; }
-    /// <summary>True when the owning cell lies on the polygon's front side.</summary>
+    /// <summary>Retail portal_side: true when the owning cell lies behind the polygon, false when in front.</summary>
     public bool PortalSide { get; }
     /// <summary>True when the portal leads outdoors.</summary>
     public bool LeadsOutside => (OtherCellId & 0xFFFF) == Outside;

@@ -49,8 +49,40 @@ public class DatWorldTests
         using var files = dats.Open();
         var world = new DatWorld(files);
         var ex = Assert.Throws<DatObjectException>(() => world.LoadLandblock(0x8040));
-        Assert.Equal("client_cell_1.dat: LandBlockInfo 0x8040FFFE: numCells: 2 cells, but client_cell_1.dat holds only 0 from 0x80400100 up.", ex.Message);
+        Assert.Equal("client_cell_1.dat: LandBlockInfo 0x8040FFFE: numCells: 2 cells (0x80400100 up), but client_cell_1.dat has no env cell 0x80400100.", ex.Message);
         Assert.False(world.World.Cells.HasLandblock(0x8040));
+    }
+
+    /// <summary>
+    /// A landblock's env cells are 0x0100 to 0x0100 + numCells - 1, each present (retail's CLandBlockInfo::num_cells;
+    /// ACE's Landblock.get_envcells): the cellar's second cell written as 0x0102 instead of 0x0101 (its portals
+    /// following) leaves a gap, which is refused, naming the missing id, not read past; nothing is loaded.
+    /// </summary>
+    [Fact]
+    public void EnvCells_AreNumberedFrom0x0100WithoutGaps_AGapIsRefusedNamingTheMissingCell()
+    {
+        var dat = Support.WorldDat.From(Scenes.SceneLibrary.Load("cellar").World);
+        uint block = dat.Landblocks[0] << 16;
+        Assert.Equal(2u, dat.Infos[0].NumCells);
+        foreach (var cell in dat.EnvCells)
+        {
+            if (cell.Id == (block | 0x0101))
+                cell.Id = block | 0x0102;
+            foreach (var portal in cell.CellPortals)
+                if (portal.OtherCellId == 0x0101)
+                    portal.OtherCellId = 0x0102;
+        }
+        using var dats = Support.DatPath.Write(dat);
+        using var files = dats.Open();
+        var world = Support.DatPath.Loader(files, dat);
+
+        var ex = Assert.Throws<DatObjectException>(() => world.LoadLandblock(dat.Landblocks[0]));
+
+        Assert.Equal($"client_cell_1.dat: LandBlockInfo 0x{block | 0xFFFE:X8}: numCells: 2 cells (0x{block | 0x0100:X8} up), but client_cell_1.dat has no env cell 0x{block | 0x0101:X8}.", ex.Message);
+        Assert.Equal("client_cell_1.dat", ex.File);
+        Assert.Empty(world.World.Cells.CellIds);
+        Assert.Empty(world.World.Objects.Records);
+        Assert.Empty(world.Loaded);
     }
 
     [Fact]

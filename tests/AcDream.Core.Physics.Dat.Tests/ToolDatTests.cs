@@ -32,7 +32,7 @@ public class ToolDatTests
         // The cottage scene's world written as DAT files; the expected counts come from the scene's own world
         // (its env cells, portals, building, objects and their trees, walked node by node here).
         var world = Scenes.SceneLibrary.Load("cottage").World;
-        using var dats = DatWorldPath.Write(Support.WorldDat.From(world));
+        using var dats = Support.DatPath.Write(Support.WorldDat.From(world));
         var cells = world.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).Select(id => (EnvCell)world.Cells.Get(id)!).ToList();
         uint landblock = cells[0].Id >> 16;
         var records = world.Objects.Records.ToList();

@@ -93,7 +93,9 @@ public static partial class SceneLoader
                     : JsonRead.Id(other, po.Child("otherCell"));
                 bool side = JsonRead.Bool(po.Req("portalSide"), po.Child("portalSide"));
                 po.End();
-                var portal = new CellPortal(polygon, otherId, side);
+                // The scene's portalSide says the owning cell is in front of the polygon; retail's portal_side
+                // (CellPortal's) is true when it is behind: the opposite convention.
+                var portal = new CellPortal(polygon, otherId, !side);
                 portals.Add(portal);
                 pending.Add((portal, po.Child("otherCell")));
             }

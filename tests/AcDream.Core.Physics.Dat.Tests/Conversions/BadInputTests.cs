@@ -204,15 +204,17 @@ public class BadInputTests
         var dat = WorldDat.From(scene.World);
         var bad = dat.EnvCells[0];
         bad.CellPortals[0].OtherCellId = 0x01FF;
-        using var files = WrittenDats.Write(dat);
-        var assembly = new DatWorldAssembly(files.Portal, files.Cell, dat.LandDefs, (owner, index) => dat.Objects[(owner, index)]);
-        var world = new PhysicsWorld();
+        using var dats = DatPath.Write(dat);
+        using var files = dats.Open();
+        var loader = DatPath.Loader(files, dat);
+        var world = loader.World;
 
-        var ex = Assert.Throws<ArgumentException>(() => assembly.LoadLandblock(world, dat.Landblocks[0]));
+        var ex = Assert.Throws<ArgumentException>(() => loader.LoadLandblock(dat.Landblocks[0]));
 
         Assert.Contains($"0x{(bad.Id & 0xFFFF0000) | 0x01FF:X8}", ex.Message);
         Assert.False(world.Cells.HasLandblock(dat.Landblocks[0]));
         Assert.Empty(world.Cells.CellIds);
         Assert.Equal(0, world.Objects.Count);
+        Assert.Empty(loader.Loaded);
     }
 }

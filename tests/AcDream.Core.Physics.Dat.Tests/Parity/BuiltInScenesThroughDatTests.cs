@@ -5,8 +5,8 @@ namespace AcDream.Core.Physics.Dat.Tests.Parity;
 
 /// <summary>
 /// Every built-in scene's world written as DAT objects (GfxObj, Setup, Environment, EnvCell, LandBlock,
-/// LandBlockInfo) into DAT files, read back through DatReaderWriter and converted by the adapter, walks its
-/// movers exactly as the scene path does: the whole trajectory is the same text (every float to the bit) as
+/// LandBlockInfo, Region) into DAT files and loaded by <see cref="DatWorld"/> holds the scene's cells and objects
+/// and walks its movers exactly as the scene path does: the whole trajectory is the same text (every float to the bit) as
 /// the scene path's, and the committed replay matches (at the replay's tolerance, as on the scene path: the
 /// committed files were recorded on another machine, and a few frames differ from this one's in the last bit).
 /// </summary>
@@ -29,6 +29,9 @@ public class BuiltInScenesThroughDatTests
         var scene = SceneLibrary.Load(name);
         var throughDat = DatPath.Through(scene, SceneLibrary.ReadText(name));
         var committed = Trajectory.LoadFile(Path.Combine(ReplayDirectory, name + ".trajectory.json"));
+        Assert.NotSame(scene.World, throughDat.World);
+        Assert.Equal(scene.World.Cells.CellIds.Order(), throughDat.World.Cells.CellIds.Order());
+        Assert.Equal(scene.World.Objects.Records.Select(r => r.Id).Order(), throughDat.World.Objects.Records.Select(r => r.Id).Order());
 
         var bits = TrajectoryReplay.Replay(throughDat, SceneRunner.Run(scene), tolerance: 0f);
         var result = TrajectoryReplay.Replay(throughDat, committed);

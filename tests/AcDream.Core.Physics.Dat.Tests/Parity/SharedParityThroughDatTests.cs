@@ -6,9 +6,10 @@ namespace AcDream.Core.Physics.Dat.Tests.Parity;
 
 /// <summary>
 /// The shared parity sets (ACE's door, trunk and boulder in shared/ace-parity; the real Holtburg cells in
-/// shared/real-cells) with their worlds taken through DAT files: every frame of every run resolves to the
-/// same bits as through the scene path (position, cell, contact, planes, normals, objects hit), and the file
-/// meets its threshold (the door bit-identical with ACE). Compiled only when a shared folder is present.
+/// shared/real-cells) with their worlds written to DAT files and loaded by <see cref="DatWorld"/>: every frame of
+/// every run resolves to the same bits as through the scene path (position, cell, contact, planes, normals,
+/// objects hit), the parity report is the scene path's, and the file meets its threshold (the door bit-identical
+/// with ACE). Compiled only when a shared folder is present.
 /// </summary>
 public class SharedParityThroughDatTests
 {
@@ -20,6 +21,11 @@ public class SharedParityThroughDatTests
     {
         var set = ParityReader.ReadFile(Path.Combine(SharedFolders.Find(folder)!, file));
         var datSet = set with { World = DatPath.Through(set.World) };
+        // The DAT holds each landblock's env cells 0x0100 up without gaps (the cells the scene lacks as fillers).
+        var envIds = datSet.World.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).ToList();
+        Assert.Subset(envIds.ToHashSet(), set.World.Cells.CellIds.Where(id => (id & 0xFFFF) >= 0x0100).ToHashSet());
+        foreach (var block in envIds.GroupBy(id => id >> 16))
+            Assert.Equal(Enumerable.Range(0x0100, block.Count()).Select(i => block.Key << 16 | (uint)i), block.Order());
         var sceneEngine = new PhysicsEngine(set.World);
         var datEngine = new PhysicsEngine(datSet.World);
         int frames = 0;
@@ -44,7 +50,9 @@ public class SharedParityThroughDatTests
         Assert.True(frames > 0);
         var report = ParityCheck.Check(datSet);
         Assert.True(report.Passed, report.ToString());
-        Assert.Equal(ParityCheck.Check(set).ToString(), report.ToString());
+        var sceneReport = ParityCheck.Check(set);
+        Assert.Equal(sceneReport.ToString(), report.ToString());
+        Assert.Equal(sceneReport.BitIdentical, report.BitIdentical);
         if (folder == "ace-parity" && file == "door.json.gz")
             Assert.Equal(report.Frames, report.BitIdentical);
     }

@@ -1,3 +1,4 @@
+using AcDream.Core.Physics.Scenes;
 using AcDream.Core.Physics.World;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Enums;
@@ -33,6 +34,7 @@ internal sealed class WorldDat
     private readonly Dictionary<PhysicsModel, uint> _models = new(ReferenceEqualityComparer.Instance);
     private readonly Dictionary<PhysicsSetup, uint> _setups = new(ReferenceEqualityComparer.Instance);
     private uint _noPhysics;
+    private DatEnvironment? _filler;
 
     /// <summary>
     /// Writes <paramref name="world"/>. The runtime keeps no terrain words once a landblock's cells are built, so
@@ -68,7 +70,10 @@ internal sealed class WorldDat
 
             var info = new LandBlockInfo { Id = (block << 16) | 0xFFFE };
             var envCells = world.Cells.EnvCellsOf(block).ToArray().OrderBy(c => c.Id).ToList();
-            info.NumCells = (uint)envCells.Count;
+            // A DAT holds every env cell of a landblock, 0x0100 up to 0x0100 + numCells - 1; a world holding only
+            // some of them under their real ids (the real-cells scenes) gets a filler cell in each gap.
+            uint last = envCells.Count == 0 ? 0x00FFu : envCells[^1].Id & 0xFFFF;
+            info.NumCells = last - 0x00FFu;
             foreach (var record in records.Where(r => r.Position.CellId >> 16 == block && AcDream.Core.Physics.LandDefs.IsLandCell(r.Position.CellId)))
             {
                 dat.Objects.Add((info.Id, info.Objects.Count), new ObjectDescription(record.Id, record.Scale, record.State, record.Flags));
@@ -86,6 +91,9 @@ internal sealed class WorldDat
 
             foreach (var cell in envCells)
                 dat.EnvCells.Add(dat.Write(cell, records.Where(r => r.Position.CellId == cell.Id).ToList()));
+            for (uint i = 0x0100; i <= last; i++)
+                if (world.Cells.Get((block << 16) | i) is null)
+                    dat.EnvCells.Add(dat.Filler((block << 16) | i));
         }
         return dat;
     }
@@ -173,6 +181,31 @@ internal sealed class WorldDat
             result.StaticObjects.Add(new Stab { Id = SetupId(record.Setup!), Frame = Frame(record.Position.Frame) });
         }
         return result;
+    }
+
+    /// <summary>
+    /// A cell standing in for one the world does not hold: a 1 m box 100 m under the landblock's origin, with no
+    /// portal and no object, so no cell search reaches it (cells are found through portals only) and it changes
+    /// no collision. All fillers share one Environment.
+    /// </summary>
+    private DatEnvCell Filler(uint id)
+    {
+        if (_filler is null)
+        {
+            var vertices = DatObjects.NewVertexArray();
+            var structure = new CellStruct { VertexArray = vertices, CellBSP = DatObjects.CellTree(BspShapes.CellBox(Vector3.Zero, Vector3.One)) };
+            structure.PhysicsBSP = DatObjects.PhysicsTree(BspShapes.Box(Vector3.Zero, Vector3.One), vertices, structure.PhysicsPolygons);
+            _filler = new DatEnvironment { Id = 0x0D00_0000u | (uint)(Environments.Count + 1) };
+            _filler.Cells.Add(0, structure);
+            Environments.Add(_filler);
+        }
+        return new DatEnvCell
+        {
+            Id = id,
+            EnvironmentId = (ushort)_filler.Id,
+            CellStructure = 0,
+            Position = new DatFrame { Origin = new Vector3(0f, 0f, -100f), Orientation = Quaternion.Identity },
+        };
     }
 
     private uint ModelId(PhysicsModel? model)

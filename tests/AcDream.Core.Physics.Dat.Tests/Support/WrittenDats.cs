@@ -30,10 +30,6 @@ internal sealed class WrittenDats : IDisposable
         return new WrittenDats(folder, Open(portal), Open(cell));
     }
 
-    public static WrittenDats Write(WorldDat world) =>
-        Write(world.GfxObjs.Cast<IDBObj>().Concat(world.Setups).Concat(world.Environments),
-            world.LandBlocks.Cast<IDBObj>().Concat(world.Infos).Concat(world.EnvCells));
-
     private static DatDatabase Open(string path) => new(o =>
     {
         o.FilePath = path;

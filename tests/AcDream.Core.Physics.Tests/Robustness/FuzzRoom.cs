@@ -59,7 +59,7 @@ internal sealed class FuzzRoom
         var nodes = planes.Select((p, i) => new BspNodeData { SplitPlane = p, Front = i < 5 ? i + 1 : -1, Bounds = bounds }).ToList();
         var doorway = Quad(P(-w, 0, 0), P(-w, 0, dh), P(w, 0, dh), P(w, 0, 0));
         world.Cells.AddEnvCell(new EnvCell(RoomId, frame, BspCompiler.Compile(inner), BspTree.Create(Array.Empty<Polygon>(), nodes),
-            [new CellPortal(doorway, CellPortal.Outside, portalSide: true)]));
+            [new CellPortal(doorway, CellPortal.Outside, portalSide: false)]));
 
         var shell = BspShapes.BoxPolygons(P(-hx, -0.2f, 0), P(-w, 0, h)).Concat(BspShapes.BoxPolygons(P(w, -0.2f, 0), P(hx, 0, h))).ToList();
         var outdoor = LandDefs.LandCellAt(TestGeometry.Landblock, origin);

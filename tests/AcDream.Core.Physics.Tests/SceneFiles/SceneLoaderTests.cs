@@ -342,6 +342,21 @@ public class SceneLoaderTests
         AssertPath(Refused(json), "movers[0].floorZ", "more than once");
     }
 
+    /// <summary>
+    /// A scene's <c>portalSide</c> says the owning cell lies in front of the portal polygon; retail's portal_side
+    /// (<see cref="CellPortal.PortalSide"/>, <c>!(flags &amp; 2)</c> in CCellPortal::UnPack) is true when it lies behind:
+    /// the loader gives the opposite. The cottage's doorway ("portalSide": true) faces +y into the room's cell box
+    /// (y 0 to 4), whose centre is in front of it, so retail's side is false.
+    /// </summary>
+    [Fact]
+    public void PortalSide_IsRetailsPortalSide_TheOppositeOfTheScenesFlag()
+    {
+        var room = Assert.IsType<EnvCell>(SceneLibrary.Load("cottage").World.Cells.Get(0xA9B40100));
+        var doorway = Assert.Single(room.Portals.ToArray());
+        Assert.True(AcDream.Core.Physics.Geometry.VectorMath.Distance(doorway.Polygon.Plane, new Vector3(0f, 2f, 1.5f)) > 0f);
+        Assert.False(doorway.PortalSide);
+    }
+
     [Fact]
     public void PortalToAnUnknownCell()
     {

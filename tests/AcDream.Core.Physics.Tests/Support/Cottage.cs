@@ -52,7 +52,7 @@ internal static class Cottage
         var world = TestGeometry.FlatWorld();
         var doorway = Quad(new(-DoorHalfWidth, 0, 0), new(-DoorHalfWidth, 0, DoorHeight), new(DoorHalfWidth, 0, DoorHeight), new(DoorHalfWidth, 0, 0));
         var room = new EnvCell(RoomId, new Frame(RoomOrigin), BspCompiler.Compile(InnerSurfaces()), CellBounds(),
-            [new CellPortal(doorway, CellPortal.Outside, portalSide: true)]);
+            [new CellPortal(doorway, CellPortal.Outside, portalSide: false)]);
         world.Cells.AddEnvCell(room);
 
         // The shell seen from outside: the south wall's two halves either side of the doorway.
