@@ -79,6 +79,12 @@ while IFS=$'\t' read -r id file find replace what; do
   selected "$id" || continue
   target="$src/$file"
   folder="${file%%/*}"
+  if [ ! -f "$target" ]; then
+    # A file moved or deleted: report it like a find that no longer matches, and go on to the next fault.
+    echo "$id	$folder	not-applicable	no file $file" | tee -a "$results"
+    bad=1
+    continue
+  fi
   cp "$target" "$work/original"
   if ! apply "$target" "$find" "$replace" 2>"$work/apply.log"; then
     echo "$id	$folder	not-applicable	$(cat "$work/apply.log")" | tee -a "$results"

@@ -7,8 +7,7 @@ namespace AcDream.Core.Physics.Dat.Tests.Parity;
 /// Every built-in scene's world written as DAT objects (GfxObj, Setup, Environment, EnvCell, LandBlock,
 /// LandBlockInfo, Region) into DAT files and loaded by <see cref="DatWorld"/> holds the scene's cells and objects
 /// and walks its movers exactly as the scene path does: the whole trajectory is the same text (every float to the bit) as
-/// the scene path's, and the committed replay matches (at the replay's tolerance, as on the scene path: the
-/// committed files were recorded on another machine, and a few frames differ from this one's in the last bit).
+/// the scene path's, and the committed replay matches bit for bit (tolerance 0, as on the scene path).
 /// </summary>
 public class BuiltInScenesThroughDatTests
 {
@@ -34,7 +33,7 @@ public class BuiltInScenesThroughDatTests
         Assert.Equal(scene.World.Objects.Records.Select(r => r.Id).Order(), throughDat.World.Objects.Records.Select(r => r.Id).Order());
 
         var bits = TrajectoryReplay.Replay(throughDat, SceneRunner.Run(scene), tolerance: 0f);
-        var result = TrajectoryReplay.Replay(throughDat, committed);
+        var result = TrajectoryReplay.Replay(throughDat, committed, tolerance: 0f);
 
         Assert.True(bits.Matches, $"{name} through DAT files against the scene path: {bits.FirstDifference}");
         Assert.Equal(SceneRunner.Run(scene).ToJson(), SceneRunner.Run(throughDat).ToJson());

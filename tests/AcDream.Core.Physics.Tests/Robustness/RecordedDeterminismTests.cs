@@ -115,7 +115,7 @@ public class RecordedDeterminismTests
             string where = "no committed trajectory to localize it";
             if (File.Exists(replay))
             {
-                var result = TrajectoryReplay.Replay(scene, Trajectory.LoadFile(replay), tolerance: 0f);
+                var result = TrajectoryReplay.Replay(scene, Trajectory.LoadFile(replay), SceneFiles.ReplayTests.Exact);
                 where = result.Matches
                     ? "the committed trajectory still replays exactly, so the difference is in a field it does not record (orientation or collidedWithEnvironment)"
                     : $"first exact difference from the committed trajectory: {result.FirstDifference}";

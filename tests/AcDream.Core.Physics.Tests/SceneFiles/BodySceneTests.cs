@@ -106,7 +106,7 @@ public class BodySceneTests
         Assert.Equal(1, frame.Quanta);
         var read = Trajectory.Parse(trajectory.ToJson());
         Assert.Equal(trajectory.ToJson(), read.ToJson());
-        Assert.True(TrajectoryReplay.Replay(scene, read).Matches);
+        Assert.True(TrajectoryReplay.Replay(scene, read, ReplayTests.Exact).Matches);
     }
 
     [Fact]

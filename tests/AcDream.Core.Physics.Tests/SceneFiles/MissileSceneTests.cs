@@ -57,7 +57,7 @@ public class MissileSceneTests
     {
         var scene = SceneLoader.Load(Valid);
         var json = SceneRunner.Run(scene).ToJson();
-        Assert.True(TrajectoryReplay.Replay(scene, Trajectory.Parse(json)).Matches);
+        Assert.True(TrajectoryReplay.Replay(scene, Trajectory.Parse(json), ReplayTests.Exact).Matches);
         var changed = Trajectory.Parse(json.Replace("\"quantum\":15", "\"quantum\":16"));
         var d = TrajectoryReplay.Replay(scene, changed).FirstDifference!;
         Assert.Equal("hit", d.Field);

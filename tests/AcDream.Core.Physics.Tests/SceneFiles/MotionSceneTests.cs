@@ -134,7 +134,7 @@ public class MotionSceneTests
         var scene = SceneLoader.Load(Valid);
         var trajectory = SceneRunner.Run(scene);
         var json = trajectory.ToJson();
-        Assert.True(TrajectoryReplay.Replay(scene, Trajectory.Parse(json)).Matches);
+        Assert.True(TrajectoryReplay.Replay(scene, Trajectory.Parse(json), ReplayTests.Exact).Matches);
         var doc = JsonNode.Parse(json)!;
         doc["movers"]![0]!["frames"]![5]!["motion"]!["forward"]!["command"] = "0x44000007";
         var result = TrajectoryReplay.Replay(scene, Trajectory.Parse(doc.ToJsonString()));

@@ -67,7 +67,7 @@ public class ReplayFieldTests
     [Fact]
     public void TheUnchangedRecording_Replays_ExactlyAtToleranceZero()
     {
-        var result = TrajectoryReplay.Replay(SceneLibrary.Load("door"), Trajectory.LoadFile(DoorReplay), tolerance: 0f);
+        var result = TrajectoryReplay.Replay(SceneLibrary.Load("door"), Trajectory.LoadFile(DoorReplay), ReplayTests.Exact);
         Assert.True(result.Matches, result.FirstDifference?.ToString());
     }
 }
