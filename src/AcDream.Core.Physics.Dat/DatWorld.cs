@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using DatReaderWriter.DBObjs;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
-using DatLandDefs = DatReaderWriter.Types.LandDefs;
 
 namespace AcDream.Core.Physics.Dat;
 
@@ -13,8 +12,9 @@ namespace AcDream.Core.Physics.Dat;
 /// LandBlockInfo counts) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
 /// the env cells'). A landblock is loaded whole or not at all: anything missing or refused throws (a
 /// <see cref="DatReadException"/> or <see cref="DatObjectException"/> naming the DAT file and object id) and the
-/// world is left as it was. Models, setups, cell structures and the height table are converted once and kept in
-/// <see cref="DatFiles.Converted"/>, shared with every other world made from the same files.
+/// world is left as it was. Models, setups and cell structures are converted once and kept in
+/// <see cref="DatFiles.Converted"/>, shared with every other world made from the same files; the Region's height
+/// table, a constant of the whole world, is read once per opened <see cref="DatFiles"/> and kept apart from them.
 /// </summary>
 /// <remarks>
 /// Threads: <see cref="Read"/> (the DAT reads and conversions, nearly all of a load's time) may run on any thread
@@ -84,7 +84,7 @@ public sealed class DatWorld
     {
         uint prefix = landblock << 16;
         var land = Files.ReadCell<LandBlock>(prefix | 0xFFFF);
-        var terrain = DatTerrain.ToTerrain(land, LandDefs());
+        var terrain = DatTerrain.ToTerrain(land, Files.RegionLandDefs());
         LandBlockInfo? info = Files.CellContains(prefix | 0xFFFE) ? Files.ReadCell<LandBlockInfo>(prefix | 0xFFFE) : null;
 
         int cellCount = (int)Math.Min(info?.NumCells ?? 0, 0xFFFE - 0x0100u);
@@ -272,9 +272,6 @@ public sealed class DatWorld
         return environment;
     }
 
-    private DatLandDefs LandDefs() =>
-        Files.Converted.GetOrAdd(RegionId, id => Files.ReadPortal<Region>(id).LandDefs
-            ?? throw new DatObjectException(id, "landDefs: the region has none."));
 
     private static bool IsPortalId(uint id) => (id >> 24) is 0x01 or 0x02 or 0x03 or 0x09 or 0x0D or 0x13;
 
