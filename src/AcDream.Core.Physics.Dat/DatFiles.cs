@@ -62,6 +62,8 @@ public sealed class DatFiles : IDisposable
 
     /// <summary>The portal DAT itself (tests watch its reads).</summary>
     internal DatFile Portal => _portal;
+    /// <summary>The cell DAT itself (tests ask it what DatReaderWriter says of an id).</summary>
+    internal DatFile Cell => _cell;
 
     /// <summary>The objects converted from these files, shared by every world made from them.</summary>
     public ConvertedObjects Converted { get; } = new();
