@@ -240,15 +240,16 @@ public sealed class DatWorld
     /// <exception cref="DatReadException">It is absent, of another type or unreadable.</exception>
     /// <exception cref="DatObjectException">Its physics is refused.</exception>
     public PhysicsModel? Model(uint gfxObjId) =>
-        Files.Converted.GetOrAdd(gfxObjId, id => new ModelEntry(DatModels.ToPhysicsModel(Files.ReadPortal<GfxObj>(id)))).Model;
+        // The conversion takes the files as its state: a cached model is found without making a closure.
+        Files.Converted.GetOrAdd(gfxObjId, Files, static (id, files) => new ModelEntry(DatModels.ToPhysicsModel(files.ReadPortal<GfxObj>(id)))).Model;
 
     /// <summary>The setup of a model id as a static object uses it: a Setup (0x02…) converted, or a GfxObj (0x01…) as one part; converted once.</summary>
     /// <exception cref="DatReadException">It or one of its parts is absent, of another type or unreadable.</exception>
     /// <exception cref="DatObjectException">It is refused.</exception>
     public PhysicsSetup Setup(uint modelId) =>
-        Files.Converted.GetOrAdd(modelId, id => (id >> 24) == 0x01
-            ? DatSetups.FromModel(Model(id))
-            : DatSetups.ToPhysicsSetup(Files.ReadPortal<Setup>(id), Model));
+        Files.Converted.GetOrAdd(modelId, this, static (id, world) => (id >> 24) == 0x01
+            ? DatSetups.FromModel(world.Model(id))
+            : DatSetups.ToPhysicsSetup(world.Files.ReadPortal<Setup>(id), world.Model));
 
     private DatCellStructure CellStructure(uint environmentId, ushort index, ref Dictionary<uint, DatEnvironment>? environments)
     {
