@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Threading;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Types;
 
@@ -61,9 +62,34 @@ public sealed class DatFiles : IDisposable
 
     /// <summary>The portal DAT itself (tests watch its reads).</summary>
     internal DatFile Portal => _portal;
+    /// <summary>The cell DAT itself (tests ask it what DatReaderWriter says of an id).</summary>
+    internal DatFile Cell => _cell;
 
     /// <summary>The objects converted from these files, shared by every world made from them.</summary>
     public ConvertedObjects Converted { get; } = new();
+
+    // The Region's LandDefs (the height table every landblock's terrain goes through): one per portal DAT, read on
+    // the first landblock and kept for the files' lifetime, as retail reads its Region once at start-up. Not part of
+    // Converted, whose Clear() forgets a landblock's models: this is a constant of the whole world.
+    private DatReaderWriter.Types.LandDefs? _landDefs;
+
+    /// <summary>
+    /// The Region's (portal DAT <see cref="DatWorld.RegionId"/>) <c>LandDefs</c>, read once per opened files and kept
+    /// until they are closed: a constant of the whole world, not a landblock's, so <see cref="ConvertedObjects.Clear"/>
+    /// does not forget it. A failed read is not kept (the next call reads again and fails the same way).
+    /// Any thread; two first calls at once may both read, and one result is kept.
+    /// </summary>
+    /// <exception cref="DatReadException">The Region is absent, of another type or unreadable.</exception>
+    /// <exception cref="DatObjectException">The Region has no LandDefs (the message names its id; the file is added by the caller).</exception>
+    internal DatReaderWriter.Types.LandDefs RegionLandDefs()
+    {
+        var cached = Volatile.Read(ref _landDefs);
+        if (cached is not null)
+            return cached;
+        var read = _portal.Read<DatReaderWriter.DBObjs.Region>(DatWorld.RegionId).LandDefs
+            ?? throw new DatObjectException(DatWorld.RegionId, "landDefs: the region has none.");
+        return Interlocked.CompareExchange(ref _landDefs, read, null) ?? read;
+    }
 
     /// <summary>Reads a portal DAT object (a GfxObj, Setup, Environment, Region, MotionTable, Animation, …).</summary>
     /// <exception cref="DatReadException">It is absent, of another type, too large or unreadable; the message names the file and id.</exception>

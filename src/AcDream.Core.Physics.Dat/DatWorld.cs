@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using DatReaderWriter.DBObjs;
 using DatEnvCell = DatReaderWriter.DBObjs.EnvCell;
 using DatEnvironment = DatReaderWriter.DBObjs.Environment;
-using DatLandDefs = DatReaderWriter.Types.LandDefs;
 
 namespace AcDream.Core.Physics.Dat;
 
@@ -13,8 +12,9 @@ namespace AcDream.Core.Physics.Dat;
 /// every one present) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
 /// the env cells'). A landblock is loaded whole or not at all: anything missing or refused throws (a
 /// <see cref="DatReadException"/> or <see cref="DatObjectException"/> naming the DAT file and object id) and the
-/// world is left as it was. Models, setups, cell structures and the height table are converted once and kept in
-/// <see cref="DatFiles.Converted"/>, shared with every other world made from the same files.
+/// world is left as it was. Models, setups and cell structures are converted once and kept in
+/// <see cref="DatFiles.Converted"/>, shared with every other world made from the same files; the Region's height
+/// table, a constant of the whole world, is read once per opened <see cref="DatFiles"/> and kept apart from them.
 /// </summary>
 /// <remarks>
 /// Threads: <see cref="Read"/> (the DAT reads and conversions, nearly all of a load's time) may run on any thread
@@ -84,7 +84,7 @@ public sealed class DatWorld
     {
         uint prefix = landblock << 16;
         var land = Files.ReadCell<LandBlock>(prefix | 0xFFFF);
-        var terrain = DatTerrain.ToTerrain(land, LandDefs());
+        var terrain = DatTerrain.ToTerrain(land, Files.RegionLandDefs());
         LandBlockInfo? info = Files.CellContains(prefix | 0xFFFE) ? Files.ReadCell<LandBlockInfo>(prefix | 0xFFFE) : null;
 
         int cellCount = (int)Math.Min(info?.NumCells ?? 0, 0xFFFE - 0x0100u);
@@ -239,15 +239,16 @@ public sealed class DatWorld
     /// <exception cref="DatReadException">It is absent, of another type or unreadable.</exception>
     /// <exception cref="DatObjectException">Its physics is refused.</exception>
     public PhysicsModel? Model(uint gfxObjId) =>
-        Files.Converted.GetOrAdd(gfxObjId, id => new ModelEntry(DatModels.ToPhysicsModel(Files.ReadPortal<GfxObj>(id)))).Model;
+        // The conversion takes the files as its state: a cached model is found without making a closure.
+        Files.Converted.GetOrAdd(gfxObjId, Files, static (id, files) => new ModelEntry(DatModels.ToPhysicsModel(files.ReadPortal<GfxObj>(id)))).Model;
 
     /// <summary>The setup of a model id as a static object uses it: a Setup (0x02…) converted, or a GfxObj (0x01…) as one part; converted once.</summary>
     /// <exception cref="DatReadException">It or one of its parts is absent, of another type or unreadable.</exception>
     /// <exception cref="DatObjectException">It is refused.</exception>
     public PhysicsSetup Setup(uint modelId) =>
-        Files.Converted.GetOrAdd(modelId, id => (id >> 24) == 0x01
-            ? DatSetups.FromModel(Model(id))
-            : DatSetups.ToPhysicsSetup(Files.ReadPortal<Setup>(id), Model));
+        Files.Converted.GetOrAdd(modelId, this, static (id, world) => (id >> 24) == 0x01
+            ? DatSetups.FromModel(world.Model(id))
+            : DatSetups.ToPhysicsSetup(world.Files.ReadPortal<Setup>(id), world.Model));
 
     private DatCellStructure CellStructure(uint environmentId, ushort index, ref Dictionary<uint, DatEnvironment>? environments)
     {
@@ -271,9 +272,6 @@ public sealed class DatWorld
         return environment;
     }
 
-    private DatLandDefs LandDefs() =>
-        Files.Converted.GetOrAdd(RegionId, id => Files.ReadPortal<Region>(id).LandDefs
-            ?? throw new DatObjectException(id, "landDefs: the region has none."));
 
     private static bool IsPortalId(uint id) => (id >> 24) is 0x01 or 0x02 or 0x03 or 0x09 or 0x0D or 0x13;
 

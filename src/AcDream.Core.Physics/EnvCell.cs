@@ -25,8 +25,11 @@ public sealed class EnvCell : Cell
     {
         if (LandDefs.IsLandCell(id) || (id & 0xFFFF) == CellPortal.Outside)
             throw new ArgumentException($"cell 0x{id:X8}: an env cell's index must be 0x100..0xFFFD.", nameof(id));
-        Guard.CellInWorld(id, $"cell 0x{id:X8}");
-        Guard.Pose(ref frame, $"cell 0x{id:X8}.frame");
+        // The names are built only when a check will use them (a DAT landblock load makes every cell here).
+        if (!LandDefs.IsValidCellOfWorld(id))
+            Guard.CellInWorld(id, $"cell 0x{id:X8}");
+        if (!Guard.IsPoseAsGiven(frame))
+            Guard.Pose(ref frame, $"cell 0x{id:X8}.frame");
         Position = new Position(id, frame);
         PhysicsBsp = physicsBsp;
         CellBsp = cellBsp ?? throw new ArgumentNullException(nameof(cellBsp), $"cell 0x{id:X8}.cellBsp: is required.");

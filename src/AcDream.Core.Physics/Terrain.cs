@@ -60,8 +60,10 @@ public sealed class Terrain
             throw new ArgumentException($"{name}.heights: expected {VertexCount} values (9×9), got {heights.Length}.", nameof(heights));
         if (terrainWords.Length != VertexCount)
             throw new ArgumentException($"{name}.terrain: expected {VertexCount} terrain words (9×9), got {terrainWords.Length}.", nameof(terrainWords));
+        // Each height's field name is built only for a refusal's message (a DAT landblock load makes 81).
         for (int i = 0; i < heights.Length; i++)
-            Guard.Coordinate(heights[i], $"{name}.heights[{i}]");
+            if (!Guard.IsCoordinate(heights[i]))
+                Guard.Coordinate(heights[i], $"{name}.heights[{i}]");
         if (landblock > 0xFFFF)
             throw new ArgumentException($"{name}.landblock: 0x{landblock:X} is not a 16-bit landblock id.", nameof(landblock));
         Guard.LandblockInWorld(landblock, $"{name}.landblock");
@@ -161,9 +163,21 @@ public sealed class Terrain
         var se = new Vector3((x + 1) * s, y * s, HeightAt(x + 1, y));
         var ne = new Vector3((x + 1) * s, (y + 1) * s, HeightAt(x + 1, y + 1));
         var nw = new Vector3(x * s, (y + 1) * s, HeightAt(x, y + 1));
-        string name = $"terrain 0x{Landblock:X4} cell ({x},{y})";
-        if (IsSouthWestToNorthEastCut(x, y))
-            return (new Polygon([sw, se, ne], PolygonSides.Single, name), new Polygon([sw, ne, nw], PolygonSides.Single, name));
-        return (new Polygon([sw, se, nw], PolygonSides.Single, name), new Polygon([se, ne, nw], PolygonSides.Single, name));
+        bool cut = IsSouthWestToNorthEastCut(x, y);
+        // The cell's name is built only for a refusal's message (a landblock makes 64 of these): a refused
+        // triangle is made again under its full name, which refuses it the same way.
+        try
+        {
+            return Triangles(cut, sw, se, ne, nw, "terrain");
+        }
+        catch (ArgumentException)
+        {
+            return Triangles(cut, sw, se, ne, nw, $"terrain 0x{Landblock:X4} cell ({x},{y})");
+        }
     }
+
+    private static (Polygon First, Polygon Second) Triangles(bool southWestToNorthEast, Vector3 sw, Vector3 se, Vector3 ne, Vector3 nw, string name) =>
+        southWestToNorthEast
+            ? (new Polygon([sw, se, ne], PolygonSides.Single, name), new Polygon([sw, ne, nw], PolygonSides.Single, name))
+            : (new Polygon([sw, se, nw], PolygonSides.Single, name), new Polygon([se, ne, nw], PolygonSides.Single, name));
 }

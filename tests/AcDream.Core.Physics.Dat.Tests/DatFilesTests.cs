@@ -168,4 +168,36 @@ public class DatFilesTests
         Assert.True(cache.Contains<string>(5u));
         Assert.False(cache.Contains<object>(5u));                 // keyed by type too: a GfxObj model and a one-part setup of the same id
     }
+
+    [Fact]
+    public void AThreadWaitingOnAFailedConversion_ConvertsAgain_AndItsResultIsKept()
+    {
+        var cache = new ConvertedObjects();
+        using var converting = new ManualResetEventSlim();
+        Exception? failure = null;
+        var first = new Thread(() =>
+        {
+            try
+            {
+                cache.GetOrAdd<string>(9u, _ =>
+                {
+                    converting.Set();
+                    Thread.Sleep(100);                     // the second thread asks meanwhile and waits
+                    throw new InvalidDataException("bad");
+                });
+            }
+            catch (Exception ex)
+            {
+                failure = ex;
+            }
+        });
+        first.Start();
+        converting.Wait();
+        string second = cache.GetOrAdd(9u, _ => "good");
+        first.Join();
+        Assert.IsType<InvalidDataException>(failure);
+        Assert.Equal("good", second);
+        Assert.Equal("good", cache.GetOrAdd<string>(9u, _ => throw new InvalidOperationException("converted twice")));
+        Assert.Equal(1, cache.Count);
+    }
 }

@@ -40,6 +40,9 @@ internal static class Guard
     private static void ThrowNotCoordinate<T>(T value, string field, string? suffix) =>
         throw new ArgumentException($"{Name(field, suffix)}: must be finite and within ±{InputLimits.MaxCoordinate} m, got {value}.", Name(field, suffix));
 
+    /// <summary>Whether <see cref="Coordinate"/> accepts the value (for callers that build the field's name only for the message).</summary>
+    public static bool IsCoordinate(float value) => MathF.Abs(value) <= InputLimits.MaxCoordinate;
+
     /// <summary>A coordinate: finite and within ±<see cref="InputLimits.MaxCoordinate"/>.</summary>
     public static void Coordinate(float value, string field, string? suffix = null)
     {
@@ -261,6 +264,16 @@ internal static class Guard
         Finite(frame.Origin, field, ".origin");
         var q = frame.Orientation;
         return SurelyValidRotation(q) || Physics.Frame.IsValidRotation(q);
+    }
+
+    /// <summary>
+    /// Whether <see cref="Pose"/> would neither write nor throw: the origin a coordinate and the rotation used as
+    /// given (for callers that build the field's name only when it would be used).
+    /// </summary>
+    public static bool IsPoseAsGiven(in Frame frame)
+    {
+        var q = frame.Orientation;
+        return IsCoordinate(frame.Origin) && (SurelyValidRotation(q) || Physics.Frame.IsValidRotation(q));
     }
 
     public static void Frame(in Frame frame, string field)
