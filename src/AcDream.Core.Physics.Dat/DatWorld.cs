@@ -10,7 +10,8 @@ namespace AcDream.Core.Physics.Dat;
 /// A <see cref="PhysicsWorld"/> filled from the retail DAT files, landblock by landblock: the terrain (LandBlock
 /// 0xXXYYFFFF through the Region's height table), the env cells (0xXXYY0100 up, as many as the LandBlockInfo counts,
 /// every one present) on their Environments' structures, the buildings and the static objects (LandBlockInfo 0xXXYYFFFE and
-/// the env cells'). A landblock is loaded whole or not at all: anything missing or refused throws (a
+/// the env cells'). The LandBlockInfo is read when the LandBlock's <c>HasObjects</c> flag is set (and must then be there),
+/// and not at all when it is clear, as retail does. A landblock is loaded whole or not at all: anything missing or refused throws (a
 /// <see cref="DatReadException"/> or <see cref="DatObjectException"/> naming the DAT file and object id) and the
 /// world is left as it was. Models, setups and cell structures are converted once and kept in
 /// <see cref="DatFiles.Converted"/>, shared with every other world made from the same files; the Region's height
@@ -85,7 +86,7 @@ public sealed class DatWorld
         uint prefix = landblock << 16;
         var land = Files.ReadCell<LandBlock>(prefix | 0xFFFF);
         var terrain = DatTerrain.ToTerrain(land, Files.RegionLandDefs());
-        LandBlockInfo? info = Files.CellContains(prefix | 0xFFFE) ? Files.ReadCell<LandBlockInfo>(prefix | 0xFFFE) : null;
+        var info = Info(land, prefix);
 
         int cellCount = (int)Math.Min(info?.NumCells ?? 0, 0xFFFE - 0x0100u);
         if (info is not null && info.NumCells != cellCount)
@@ -136,6 +137,24 @@ public sealed class DatWorld
             objects[i] = new DatStaticObject(description, p.ModelId, Setup(p.ModelId), p.Position);
         }
         return new DatLandblock(landblock, terrain, envCells, buildings, objects);
+    }
+
+    /// <summary>
+    /// The landblock's LandBlockInfo as retail finds it: only when the LandBlock's flag says it has one
+    /// (<c>HasObjects</c>, retail <c>CLandBlock::lbi_exists</c>, the first field <c>CLandBlock::UnPack</c> reads,
+    /// acclient.c 351520). <c>CLandBlock::InitLoad</c> (acclient.c 352062) fetches 0xXXYYFFFE only then, and fails
+    /// the landblock when it is absent; with the flag clear it loads the landblock without one, whatever the file
+    /// holds, so no buildings (<c>init_buildings</c>, 352113), no static objects (<c>init_static_objs</c>, 352786)
+    /// and no env cells counted.
+    /// </summary>
+    private LandBlockInfo? Info(LandBlock land, uint prefix)
+    {
+        if (!land.HasObjects)
+            return null;
+        uint infoId = prefix | 0xFFFE;
+        if (!Files.CellContains(infoId))
+            throw new DatObjectException(prefix | 0xFFFF, $"hasObjects: set (the landblock has a LandBlockInfo), but {Files.CellName} has no LandBlockInfo 0x{infoId:X8}.");
+        return Files.ReadCell<LandBlockInfo>(infoId);
     }
 
     private static void Collect(List<(uint, int, DatPlacement)> into, uint owner, IReadOnlyList<DatPlacement> placements)

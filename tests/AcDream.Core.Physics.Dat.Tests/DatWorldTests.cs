@@ -32,7 +32,7 @@ public class DatWorldTests
     public void AnAbsentModel_FailsTheLoad_AndLeavesTheWorldAsItWas()
     {
         var info = WorldWriter.Info(0x8040, 0, (Post, new Vector3(10, 10, 0)), (0x02000099, new Vector3(20, 20, 0)));
-        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040), info]);
+        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040, hasObjects: true), info]);
         using var files = dats.Open();
         var world = new DatWorld(files);
         var ex = Assert.Throws<DatReadException>(() => world.LoadLandblock(0x8040));
@@ -45,7 +45,7 @@ public class DatWorldTests
     [Fact]
     public void AnAbsentEnvCell_FailsTheLoad_NamingIt()
     {
-        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040), WorldWriter.Info(0x8040, 2)]);
+        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040, hasObjects: true), WorldWriter.Info(0x8040, 2)]);
         using var files = dats.Open();
         var world = new DatWorld(files);
         var ex = Assert.Throws<DatObjectException>(() => world.LoadLandblock(0x8040));
@@ -100,7 +100,7 @@ public class DatWorldTests
     public void TheDescriber_GivesIds_AndADuplicateIsRefusedBeforeTheWorldIsTouched()
     {
         var info = WorldWriter.Info(0x8040, 0, (Post, new Vector3(10, 10, 0)), (Post, new Vector3(20, 20, 0)));
-        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040), info]);
+        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)], [WorldWriter.Land(0x8040, hasObjects: true), info]);
         using var files = dats.Open();
         var seen = new List<(uint, int, uint, int)>();
         var world = new DatWorld(files, describe: (lb, i, owner, oi, p) =>
@@ -126,7 +126,7 @@ public class DatWorldTests
         // first object went in: all of them come out again, and a neighbour loaded before keeps its own.
         var info = WorldWriter.Info(0x8040, 0, (Post, new Vector3(10, 10, 0)), (Post, new Vector3(20, 20, 0)));
         using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(Post)],
-            [WorldWriter.Land(0x8040), info, WorldWriter.Land(0x8041), WorldWriter.Info(0x8041, 0, (Post, new Vector3(30, 30, 0)))]);
+            [WorldWriter.Land(0x8040, hasObjects: true), info, WorldWriter.Land(0x8041, hasObjects: true), WorldWriter.Info(0x8041, 0, (Post, new Vector3(30, 30, 0)))]);
         using var files = dats.Open();
         var world = new DatWorld(files, describe: (lb, i, owner, oi, p) =>
             new DatObjectDescription(lb << 8 | (uint)i, lb == 0x8040 && i == 1 ? float.NaN : 1f, PhysicsState.Static, ShadowFlags.None));

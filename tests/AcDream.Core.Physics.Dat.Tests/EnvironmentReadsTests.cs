@@ -50,7 +50,7 @@ public class EnvironmentReadsTests
         // Four cells: three on the shared Environment (structures 0, 1, 0), one on its own.
         return new TempDats([WorldWriter.Region(), shared, single],
         [
-            WorldWriter.Land(Landblock), WorldWriter.Info(Landblock, 4),
+            WorldWriter.Land(Landblock, hasObjects: true), WorldWriter.Info(Landblock, 4),
             Cell(0x0100, Shared, 0, 20f), Cell(0x0101, Shared, 1, 50f), Cell(0x0102, Shared, 0, 80f), Cell(0x0103, Single, 0, 110f),
         ]);
     }

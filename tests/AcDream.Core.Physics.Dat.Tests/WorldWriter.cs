@@ -27,8 +27,12 @@ internal static class WorldWriter
         return Region(defs);
     }
 
-    /// <summary>A landblock of rolling land: the height index of a vertex is a triangle wave of its global grid coordinates, so neighbouring landblocks meet.</summary>
-    public static LandBlock Land(uint landblock, bool hasObjects = true)
+    /// <summary>
+    /// A landblock of rolling land: the height index of a vertex is a triangle wave of its global grid coordinates, so
+    /// neighbouring landblocks meet. <paramref name="hasObjects"/> is the flag saying a LandBlockInfo is written beside
+    /// it (retail's lbi_exists): set it exactly when one is.
+    /// </summary>
+    public static LandBlock Land(uint landblock, bool hasObjects = false)
     {
         var land = new LandBlock { Id = landblock << 16 | 0xFFFF, HasObjects = hasObjects };
         for (int x = 0; x < 9; x++)
@@ -69,7 +73,7 @@ internal static class WorldWriter
             for (int y = y0; y <= y1; y++)
             {
                 uint lb = (uint)(x << 8 | y);
-                cell.Add(Land(lb));
+                cell.Add(Land(lb, hasObjects: true));
                 cell.Add(Info(lb, 0, (postId, new Vector3(96f, 100.9f, 0f))));
             }
         return new TempDats([Region(), Post(0x02000001)], cell);

@@ -87,6 +87,8 @@ internal sealed class WorldDat
                         b.Portals.Add(new BuildingPortal { OtherCellId = (ushort)entrance });
                     info.Buildings.Add(b);
                 }
+            // Retail's LandBlock says whether its LandBlockInfo exists (lbi_exists); one is written for every landblock.
+            land.HasObjects = true;
             dat.Infos.Add(info);
 
             foreach (var cell in envCells)
