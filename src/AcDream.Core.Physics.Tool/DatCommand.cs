@@ -6,6 +6,7 @@ using System.Linq;
 using AcDream.Core.Physics.Dat;
 using AcDream.Core.Physics.Scenes;
 using GfxObj = DatReaderWriter.DBObjs.GfxObj;
+using LandBlock = DatReaderWriter.DBObjs.LandBlock;
 using LandBlockInfo = DatReaderWriter.DBObjs.LandBlockInfo;
 using Setup = DatReaderWriter.DBObjs.Setup;
 using DatReaderWriter.Types;
@@ -91,8 +92,10 @@ internal static class DatCommand
             if (environment.Cells.TryGetValue(datCell.CellStructure, out var structure))
                 Consider(structure.PhysicsBSP?.Root, $"env cell 0x{cell.Id:X8}");
         }
+        // The LandBlockInfo the load read: only when the LandBlock's flag is set (retail's lbi_exists).
+        bool hasInfo = files.ReadCell<LandBlock>(prefix | 0xFFFF).HasObjects;
         var models = new SortedSet<uint>();
-        if (files.CellContains(prefix | 0xFFFE))
+        if (hasInfo)
             foreach (var b in files.ReadCell<LandBlockInfo>(prefix | 0xFFFE).Buildings)
                 models.Add(b.ModelId);
         foreach (var o in block.Objects)
@@ -119,6 +122,11 @@ internal static class DatCommand
             $"{Program.Count(block.Objects.Count, "static object")} ({Program.Count(distinctModels, "model")})");
         stdout.WriteLine($"physics polygons: {cellPolygons} in env cells, {shellPolygons} in building shells, {objectPolygons} in object parts; " +
             $"deepest physics BSP {depth} ({owner})");
+        stdout.WriteLine(hasInfo
+            ? $"hasObjects set: LandBlockInfo 0x{prefix | 0xFFFE:X8} read"
+            : files.CellContains(prefix | 0xFFFE)
+                ? $"hasObjects clear: LandBlockInfo 0x{prefix | 0xFFFE:X8} in the file, not read (retail reads it only when the flag is set)"
+                : "hasObjects clear: no LandBlockInfo");
     }
 
     private static int Depth(PhysicsBSPNode? node)

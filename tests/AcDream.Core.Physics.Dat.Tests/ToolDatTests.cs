@@ -24,6 +24,23 @@ public class ToolDatTests
         var lines = output.Split('\n', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal("landblock 0x8040: 64 land cells (terrain 0 to 4 m), 0 env cells (0 portals, 0 to outside), 0 buildings (0 entrance cells), 1 static object (1 model)", lines[0]);
         Assert.Equal("physics polygons: 0 in env cells, 0 in building shells, 0 in object parts; deepest physics BSP 0 (none)", lines[1]);
+        Assert.Equal("hasObjects set: LandBlockInfo 0x8040FFFE read", lines[2]);
+    }
+
+    [Fact]
+    public void Dat_SaysWhenTheFlagLeavesALandBlockInfoUnread()
+    {
+        using var dats = new TempDats([WorldWriter.Region(), WorldWriter.Post(0x02000001)],
+            [WorldWriter.Land(0x8040), WorldWriter.Info(0x8040, 0, (0x02000001, new Vector3(96f, 100.9f, 0f))), WorldWriter.Land(0x8041)]);
+        var (code, output, err) = Tool("dat", dats.Directory, "0x8040");
+        Assert.True(code == 0, err);
+        var lines = output.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        Assert.StartsWith("landblock 0x8040: 64 land cells (", lines[0]);
+        Assert.EndsWith(", 0 static objects (0 models)", lines[0]);
+        Assert.Equal("hasObjects clear: LandBlockInfo 0x8040FFFE in the file, not read (retail reads it only when the flag is set)", lines[2]);
+        (code, output, err) = Tool("dat", dats.Directory, "0x8041");
+        Assert.True(code == 0, err);
+        Assert.Equal("hasObjects clear: no LandBlockInfo", output.Split('\n', StringSplitOptions.RemoveEmptyEntries)[2]);
     }
 
     [Fact]
