@@ -51,30 +51,33 @@ internal static class DatObjectKinds
             return null;
         int found = 0;
         DBObjType type = DBObjType.Unknown;
-        foreach (ref readonly var k in (file == DatFileType.Cell ? CellExact : PortalExact).AsSpan())
-            if (k.FirstId == id) { found++; type = k.ObjectType; }
+        // Indexed loops over the arrays: no span or enumerator of Kind for the first load to compile.
+        var exact = file == DatFileType.Cell ? CellExact : PortalExact;
+        for (int i = 0; i < exact.Length; i++)
+            if (exact[i].FirstId == id) { found++; type = exact[i].ObjectType; }
         if (found > 0)
             return found == 1 ? type : null;
         if (file == DatFileType.Cell)
         {
-            foreach (ref readonly var k in CellMasks.AsSpan())
-                if ((id & 0xFFFF) == k.MaskId) { found++; type = k.ObjectType; }
+            for (int i = 0; i < CellMasks.Length; i++)
+                if ((id & 0xFFFF) == CellMasks[i].MaskId) { found++; type = CellMasks[i].ObjectType; }
             return found switch { 0 => EnvCellType, 1 => type, _ => null };
         }
-        foreach (ref readonly var k in PortalRanges.AsSpan())
-            if (id >= k.FirstId && id <= k.LastId) { found++; type = k.ObjectType; }
+        for (int i = 0; i < PortalRanges.Length; i++)
+            if (id >= PortalRanges[i].FirstId && id <= PortalRanges[i].LastId) { found++; type = PortalRanges[i].ObjectType; }
         return found switch { 0 => DBObjType.Unknown, 1 => type, _ => null };
     }
 
     /// <summary>
-    /// The file and object type of a DBObj type, as its <see cref="DBObjTypeAttribute"/> (inherited too) says: from
-    /// the table for DatReaderWriter's own types, else read from the type; null when it has none.
+    /// The file and object type of a DBObj type, as its own <see cref="DBObjTypeAttribute"/> says (DatReaderWriter does
+    /// not let it be inherited): from the table for DatReaderWriter's own types, else read from the type; null when
+    /// it has none.
     /// </summary>
     public static Kind? OfType(Type type)
     {
-        foreach (ref readonly var k in All.AsSpan())
-            if (k.Type == type)
-                return k;
+        for (int i = 0; i < All.Length; i++)
+            if (All[i].Type == type)
+                return All[i];
         return type.GetCustomAttribute<DBObjTypeAttribute>() is { } a ? ToKind(type, a) : null;
     }
 
@@ -90,14 +93,14 @@ internal static class DatObjectKinds
     private static Kind[] Select(DatFileType file, Rule rule)
     {
         int count = 0;
-        foreach (var k in All)
-            if (k.File == file && Matches(k, rule))
+        for (int i = 0; i < All.Length; i++)
+            if (All[i].File == file && Matches(All[i], rule))
                 count++;
         var selected = new Kind[count];
         count = 0;
-        foreach (var k in All)
-            if (k.File == file && Matches(k, rule))
-                selected[count++] = k;
+        for (int i = 0; i < All.Length; i++)
+            if (All[i].File == file && Matches(All[i], rule))
+                selected[count++] = All[i];
         return selected;
     }
 
