@@ -265,7 +265,9 @@ public sealed class DatWorld
         if (Files.Converted.TryGet(key, out DatCellStructure? converted))
             return converted;
         var environment = EnvironmentOfLoad(environmentId, ref environments);
-        return Files.Converted.GetOrAdd(key, (environment, index), static (_, s) => DatCells.ToCellStructure(s.environment, s.index));
+        // The structure's index is the key's low 16 bits; the state is only the Environment (a reference: the cache's
+        // code for it is the one Model and Setup use, nothing more for a first load to compile).
+        return Files.Converted.GetOrAdd(key, environment, static (k, e) => DatCells.ToCellStructure(e, k & 0xFFFF));
     }
 
     // The Environment as this load read it, reading it on the load's first request.
