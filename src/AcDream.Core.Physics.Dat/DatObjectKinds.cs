@@ -20,9 +20,10 @@ namespace AcDream.Core.Physics.Dat;
 /// <remarks>
 /// The attributes of the DatReaderWriter version this package references are written out below
 /// (<see cref="Written"/>; a test checks them against the attributes themselves). Reading them by reflection
-/// instead loads every one of DatReaderWriter's ~400 types and parses 53 attributes: 20-40 ms of a process's first
-/// landblock load on the 2-core test machine, against about 2 ms for the table. Under any other DatReaderWriter
-/// version they are read by reflection (<see cref="FromAttributes"/>), as before.
+/// instead loads every one of DatReaderWriter's ~400 types and parses 53 attributes, which made a process's first
+/// landblock load 10-18 ms slower on the 2-core test machine (docs/performance.md, "The first load in a process");
+/// the table's types cost about 2 ms to load. Under any other DatReaderWriter version they are read by reflection
+/// (<see cref="FromAttributes"/>), as before.
 /// </remarks>
 internal static class DatObjectKinds
 {
@@ -123,7 +124,7 @@ internal static class DatObjectKinds
         return kinds.ToArray();
     }
 
-    /// <summary>DatReaderWriter 2.1.4's DBObj types and their attributes' values, by type name.</summary>
+    /// <summary>DatReaderWriter 2.1.4's DBObj types and their attributes' values, sorted by type name.</summary>
     internal static Kind[] Written() =>
     [
         new(typeof(Obj.ActionMap), DatFileType.Portal, DBObjType.DBProperties, 0x26000000, 0x2600FFFF, 0),
