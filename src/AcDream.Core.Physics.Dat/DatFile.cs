@@ -1,10 +1,8 @@
 using System;
 using System.Buffers.Binary;
 using System.IO;
-using System.Reflection;
 using DatReaderWriter;
 using DatReaderWriter.Enums;
-using DatReaderWriter.Lib.Attributes;
 using DatReaderWriter.Lib.IO;
 using DatReaderWriter.Options;
 using DatReaderWriter.Types;
@@ -115,16 +113,16 @@ internal sealed class DatFile : IDisposable
     /// <see cref="MaxObjectBytes"/>, or it cannot be unpacked.</exception>
     public T Read<T>(uint id) where T : DBObj
     {
-        var kind = Kind<T>.Attribute;
-        if (kind.DatFileType != Type)
-            throw new ArgumentException($"{typeof(T).Name} is a {Describe(kind.DatFileType)} DAT object; {Name} is the {Describe(Type)} DAT.", nameof(T));
+        var kind = Kind<T>.Value;
+        if (kind.File != Type)
+            throw new ArgumentException($"{typeof(T).Name} is a {Describe(kind.File)} DAT object; {Name} is the {Describe(Type)} DAT.", nameof(T));
         lock (_gate)
         {
             if (!_database.Tree.TryGetFile(id, out var entry))
-                throw new DatReadException(Name, id, $"is absent (expected a {kind.DBObjType}).");
+                throw new DatReadException(Name, id, $"is absent (expected a {kind.ObjectType}).");
             var actual = DatObjectKinds.Of(Type, id) ?? _database.TypeFromId(id);
-            if (actual != kind.DBObjType)
-                throw new DatReadException(Name, id, $"is a {actual}, not a {kind.DBObjType}.");
+            if (actual != kind.ObjectType)
+                throw new DatReadException(Name, id, $"is a {actual}, not a {kind.ObjectType}.");
             if (entry.Size > MaxObjectBytes)
                 throw new DatReadException(Name, id, $"is {entry.Size} bytes, more than the {MaxObjectBytes} read.");
             Unpacking?.Invoke(id);
@@ -135,9 +133,9 @@ internal sealed class DatFile : IDisposable
             }
             catch (Exception ex) when (ex is not OutOfMemoryException)
             {
-                throw new DatReadException(Name, id, $"cannot be read as a {kind.DBObjType}: {ex.Message}", ex);
+                throw new DatReadException(Name, id, $"cannot be read as a {kind.ObjectType}: {ex.Message}", ex);
             }
-            throw new DatReadException(Name, id, $"cannot be read as a {kind.DBObjType}.");
+            throw new DatReadException(Name, id, $"cannot be read as a {kind.ObjectType}.");
         }
     }
 
@@ -155,10 +153,10 @@ internal sealed class DatFile : IDisposable
             _database.Dispose();
     }
 
-    // What DatReaderWriter's generated type says of itself: its file and its object type.
+    // What DatReaderWriter's generated type says of itself (its attribute): its file and its object type.
     private static class Kind<T> where T : DBObj
     {
-        public static readonly DBObjTypeAttribute Attribute = typeof(T).GetCustomAttribute<DBObjTypeAttribute>()
+        public static readonly DatObjectKinds.Kind Value = DatObjectKinds.OfType(typeof(T))
             ?? throw new InvalidOperationException($"{typeof(T).Name} is not a DAT object type.");
     }
 }

@@ -33,13 +33,12 @@ public static class DatTerrain
             throw new DatObjectException(0x1300_0000, $"landDefs.landHeightTable: expected 256 heights, got {table?.Length ?? 0}.");
         if (block.Terrain is not { Length: count })
             throw new DatObjectException(id, $"terrain: expected {count} terrain words (9×9), got {block.Terrain?.Length ?? 0}.");
+        // The loop is in its own method: a method with both a stack buffer and a loop is compiled fully optimized at
+        // its first call (on-stack replacement cannot take it), which costs a process's first load more than the
+        // quick first compilation this method, called once per load, gets without one.
         Span<float> heights = stackalloc float[count];
         Span<ushort> words = stackalloc ushort[count];
-        for (int i = 0; i < count; i++)
-        {
-            heights[i] = table[block.Height[i]];
-            words[i] = block.Terrain[i];
-        }
+        Gather(block, table, heights, words);
         try
         {
             return new Terrain(id >> 16, heights, words, $"LandBlock 0x{id:X8}");
@@ -47,6 +46,16 @@ public static class DatTerrain
         catch (ArgumentException ex)
         {
             throw new DatObjectException(id, ex.Message, ex);
+        }
+    }
+
+    // Each vertex's height through the table and its terrain word, by index.
+    private static void Gather(LandBlock block, float[] table, Span<float> heights, Span<ushort> words)
+    {
+        for (int i = 0; i < heights.Length; i++)
+        {
+            heights[i] = table[block.Height[i]];
+            words[i] = block.Terrain[i];
         }
     }
 }

@@ -11,5 +11,5 @@ public enum PolygonSides : byte
     /// <summary>Both faces, same surface (SidesType 1).</summary>
     Double = 1,
     /// <summary>Both faces, separate surfaces (SidesType 2).</summary>
-    Both = 2,
+    Both = 2,  // the last value: Polygon's constructor accepts Single to Both by a range check
 }

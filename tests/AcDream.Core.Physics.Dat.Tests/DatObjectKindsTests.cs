@@ -68,4 +68,31 @@ public class DatObjectKindsTests
     [InlineData(DatFileType.Portal, 0x13000000u, DBObjType.Region)]
     public void EveryTypeALoadReads_IsAnsweredWithoutDatReaderWriter(DatFileType file, uint id, DBObjType expected) =>
         Assert.Equal(expected, DatObjectKinds.Of(file, id));
+
+    [Fact]
+    public void TheWrittenTable_IsTheReferencedDatReaderWritersAttributes()
+    {
+        // The table is used only under the version it was taken from; this test runs against that version.
+        Assert.True(DatObjectKinds.UsesWrittenTable, $"DatReaderWriter {typeof(DBObj).Assembly.GetName().Version} is loaded, the table is {DatPackage.ReaderVersion}'s.");
+        var written = DatObjectKinds.Written();
+        var read = DatObjectKinds.FromAttributes();
+        var missing = read.Except(written).Select(k => $"{k.Type.Name} {k.File} {k.ObjectType} 0x{k.FirstId:X8}-0x{k.LastId:X8} mask 0x{k.MaskId:X8}").ToList();
+        var extra = written.Except(read).Select(k => $"{k.Type.Name} {k.File} {k.ObjectType} 0x{k.FirstId:X8}-0x{k.LastId:X8} mask 0x{k.MaskId:X8}").ToList();
+        Assert.True(missing.Count == 0 && extra.Count == 0,
+            $"the written table differs from the attributes: not written {string.Join("; ", missing)}; written but not so {string.Join("; ", extra)}");
+        Assert.Equal(written.Length, written.Select(k => k.Type).Distinct().Count());
+    }
+
+    // A type outside DatReaderWriter's assembly: answered from its own attribute, by reflection. DatReaderWriter's
+    // attribute is not inherited, so a class derived from GfxObj has none, and a read of it is refused as before.
+    private sealed class DerivedGfxObj : GfxObj { }
+
+    [Fact]
+    public void ATypeOutsideTheTable_IsAnsweredByItsOwnAttribute()
+    {
+        Assert.Null(typeof(DerivedGfxObj).GetCustomAttribute<DBObjTypeAttribute>());
+        Assert.Null(DatObjectKinds.OfType(typeof(DerivedGfxObj)));
+        var gfxObj = DatObjectKinds.OfType(typeof(GfxObj));
+        Assert.Equal((DatFileType.Portal, DBObjType.GfxObj, 0x0100_0000u, 0x0100_FFFFu), (gfxObj!.Value.File, gfxObj.Value.ObjectType, gfxObj.Value.FirstId, gfxObj.Value.LastId));
+    }
 }
