@@ -114,7 +114,7 @@ public static class DatCells
     /// The cell's static objects in stored order (<c>StaticObjects</c>, present when <c>Flags</c> has
     /// <c>HasStaticObjs</c>): each model id at its landblock-local frame, labelled with this cell.
     /// </summary>
-    /// <exception cref="DatObjectException">More than <see cref="MaxStaticObjects"/>, or an entry without its frame; the message names the cell id.</exception>
+    /// <exception cref="DatObjectException">More than <see cref="MaxStaticObjects"/>, an entry without its frame, or a frame the world would refuse (an origin beyond the coordinate limit, a rotation it cannot normalize); the message names the cell id.</exception>
     public static IReadOnlyList<DatPlacement> StaticObjects(DatEnvCell cell)
     {
         ArgumentNullException.ThrowIfNull(cell);
@@ -127,7 +127,7 @@ public static class DatCells
         for (int i = 0; i < stabs.Count; i++)
         {
             var stab = stabs[i] ?? throw new DatObjectException(cell.Id, $"staticObjects[{i}]: is null.");
-            result[i] = new DatPlacement(stab.Id, new Position(cell.Id, DatSetups.ToFrame(stab.Frame, cell.Id, $"staticObjects[{i}].frame")));
+            result[i] = new DatPlacement(stab.Id, new Position(cell.Id, DatSetups.ToPlacementFrame(stab.Frame, cell.Id, $"staticObjects[{i}].frame")));
         }
         return result;
     }

@@ -21,7 +21,7 @@ public static class DatLandblocks
     /// <c>object_frames</c>): each model id at its frame, which is landblock-local; the cell is the land cell
     /// below the origin (<see cref="Position.Outdoor"/>, retail <c>LandDefs::adjust_to_outside</c>).
     /// </summary>
-    /// <exception cref="DatObjectException">More than <see cref="MaxObjects"/>, an entry without its frame, or a frame outside the world; the message names the LandBlockInfo id.</exception>
+    /// <exception cref="DatObjectException">More than <see cref="MaxObjects"/>, an entry without its frame, a frame outside the world, or one the world would refuse (an origin beyond the coordinate limit, a rotation it cannot normalize); the message names the LandBlockInfo id.</exception>
     public static IReadOnlyList<DatPlacement> Objects(LandBlockInfo info)
     {
         ArgumentNullException.ThrowIfNull(info);
@@ -123,7 +123,7 @@ public static class DatLandblocks
     {
         if ((infoId & 0xFFFF) != 0xFFFE)
             throw new DatObjectException(infoId, "id: a LandBlockInfo's id is 0xXXYYFFFE.");
-        var local = DatSetups.ToFrame(frame, infoId, field);
+        var local = DatSetups.ToPlacementFrame(frame, infoId, field);
         Position position;
         try
         {

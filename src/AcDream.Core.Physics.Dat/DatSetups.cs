@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using DatReaderWriter.DBObjs;
+using AcDream.Core.Physics.Validation;
 using DatReaderWriter.Enums;
 
 namespace AcDream.Core.Physics.Dat;
@@ -109,4 +110,26 @@ public static class DatSetups
         frame is null
             ? throw new DatObjectException(objectId, $"{field}: is missing.")
             : new Frame(frame.Origin, frame.Orientation);
+
+    /// <summary>
+    /// A static object's frame, checked as the world checks an object it registers (an origin within the coordinate
+    /// limit, a rotation it can normalize), so a damaged one is refused where it is read, naming the DAT object and
+    /// the field, rather than by the world naming only the object's game id.
+    /// </summary>
+    internal static Frame ToPlacementFrame(DatReaderWriter.Types.Frame? frame, uint objectId, string field)
+    {
+        var result = ToFrame(frame, objectId, field);
+        if (!Guard.IsValidFrame(result))
+        {
+            try
+            {
+                Guard.Frame(result, field);
+            }
+            catch (ArgumentException ex)
+            {
+                throw new DatObjectException(objectId, ex.Message, ex);
+            }
+        }
+        return result;
+    }
 }

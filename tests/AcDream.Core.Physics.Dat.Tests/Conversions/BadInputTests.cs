@@ -188,6 +188,33 @@ public class BadInputTests
         Refused(() => DatLandblocks.ToBuilding(info, 0, shell), 0xA9B4FFFE, "LandBlockInfo", "buildings[0]", "0 buildings");
     }
 
+    /// <summary>
+    /// A static object's frame the world would refuse when it is registered (the fuzz of damaged objects found
+    /// these reaching the world, whose message named the object's game id, not the DAT object): refused where it
+    /// is read, naming the LandBlockInfo or env cell and the field.
+    /// </summary>
+    [Fact]
+    public void APlacementFrameTheWorldRefuses_IsRefusedNamingTheObjectAndField()
+    {
+        var info = WorldWriter.Info(0xA9B4, 0, (0x02000001, new Vector3(30, 30, 0)), (0x02000001, new Vector3(40, 40, 0)));
+        info.Objects[1].Frame.Orientation = new Quaternion(float.NaN, 0, 0, 1);
+        Refused(() => DatLandblocks.Objects(info), 0xA9B4FFFE, "LandBlockInfo", "objects[1].frame.orientation", "finite");
+        info.Objects[1].Frame.Orientation = new Quaternion(0, 0, 0, 2e31f);
+        Refused(() => DatLandblocks.Objects(info), 0xA9B4FFFE, "objects[1].frame.orientation", "overflows");
+
+        var cell = new DatEnvCell
+        {
+            Id = 0xA9B40100,
+            Flags = EnvCellFlags.HasStaticObjs,
+            StaticObjects = [new Stab { Id = 0x02000001, Frame = new DatFrame { Origin = new Vector3(1, 2, 3), Orientation = Quaternion.Identity } }],
+        };
+        cell.StaticObjects[0].Frame.Origin = new Vector3(1, float.PositiveInfinity, 3);
+        Refused(() => DatCells.StaticObjects(cell), 0xA9B40100, "EnvCell", "staticObjects[0].frame.origin");
+        cell.StaticObjects[0].Frame.Origin = new Vector3(1, 2, 3);
+        cell.StaticObjects[0].Frame.Orientation = default;
+        Refused(() => DatCells.StaticObjects(cell), 0xA9B40100, "staticObjects[0].frame.orientation", "zero length");
+    }
+
     [Fact]
     public void AnObjectFileReaderNamesTheFile()
     {
