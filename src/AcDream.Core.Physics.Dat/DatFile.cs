@@ -4,6 +4,7 @@ using System.IO;
 using DatReaderWriter;
 using DatReaderWriter.Enums;
 using DatReaderWriter.Lib.IO;
+using DatReaderWriter.Lib.IO.DatBTree;
 using DatReaderWriter.Options;
 using DatReaderWriter.Types;
 
@@ -110,7 +111,7 @@ internal sealed class DatFile : IDisposable
 
     /// <summary>Reads the object <paramref name="id"/> as a <typeparamref name="T"/>.</summary>
     /// <exception cref="DatReadException">The object is absent, its id names another type, it is larger than
-    /// <see cref="MaxObjectBytes"/>, or it cannot be unpacked.</exception>
+    /// <see cref="MaxObjectBytes"/> (stored, or inflated when compressed), or it cannot be unpacked.</exception>
     public T Read<T>(uint id) where T : DBObj
     {
         var kind = Kind<T>.Value;
@@ -125,6 +126,8 @@ internal sealed class DatFile : IDisposable
                 throw new DatReadException(Name, id, $"is a {actual}, not a {kind.ObjectType}.");
             if (entry.Size > MaxObjectBytes)
                 throw new DatReadException(Name, id, $"is {entry.Size} bytes, more than the {MaxObjectBytes} read.");
+            if (entry.Flags.HasFlag(DatBTreeFileFlags.IsCompressed))
+                CheckInflatedSize(id, entry.Offset, entry.Size);
             Unpacking?.Invoke(id);
             try
             {
@@ -137,6 +140,27 @@ internal sealed class DatFile : IDisposable
             }
             throw new DatReadException(Name, id, $"cannot be read as a {kind.ObjectType}.");
         }
+    }
+
+    // A compressed object starts with its inflated size, which DatReaderWriter allocates before inflating (up to
+    // 4 GB from a damaged word): the word is read first, from the object's first block, and capped as the stored
+    // size is.
+    private void CheckInflatedSize(uint id, int firstBlock, uint storedSize)
+    {
+        if (storedSize < sizeof(uint))
+            return;     // DatReaderWriter keeps so short an object as it is
+        var head = new byte[sizeof(uint)];
+        try
+        {
+            _database.BlockAllocator.ReadBlock(head, firstBlock);
+        }
+        catch (Exception ex) when (ex is not OutOfMemoryException)
+        {
+            throw new DatReadException(Name, id, $"cannot be read: {ex.Message}", ex);
+        }
+        uint inflated = BinaryPrimitives.ReadUInt32LittleEndian(head);
+        if (inflated > MaxObjectBytes)
+            throw new DatReadException(Name, id, $"inflates to {inflated} bytes, more than the {MaxObjectBytes} read.");
     }
 
     /// <summary>DatReaderWriter's own answer for the type of an id in this file (tests compare <see cref="DatObjectKinds"/> with it).</summary>

@@ -1,4 +1,8 @@
 using System.Threading;
+using DatReaderWriter;
+using DatReaderWriter.Lib.IO;
+using DatReaderWriter.Lib.IO.DatBTree;
+using DatReaderWriter.Options;
 using DatReaderWriter.DBObjs;
 using DatReaderWriter.Types;
 using AcDream.Core.Physics.Scenes;
@@ -199,5 +203,65 @@ public class DatFilesTests
         Assert.Equal("good", second);
         Assert.Equal("good", cache.GetOrAdd<string>(9u, _ => throw new InvalidOperationException("converted twice")));
         Assert.Equal(1, cache.Count);
+    }
+}
+
+/// <summary>
+/// A compressed object (its index entry's IsCompressed flag) gives its inflated size in its first four bytes, and
+/// DatReaderWriter allocates that many bytes before inflating: a damaged size is refused before the read, naming
+/// the file and object, instead of an allocation of up to 4 GB (an OutOfMemoryException, or the memory taken).
+/// </summary>
+public class CompressedObjectTests
+{
+    private const uint Land = 0xA9B4FFFF;
+
+    [Theory]
+    [InlineData(0x7FFF_FFF0u)]
+    [InlineData(0xFFFF_FFF0u)]
+    [InlineData(DatFile.MaxObjectBytes + 1u)]
+    public void AnInflatedSizeAboveTheCap_IsRefusedNamingTheObject(uint inflated)
+    {
+        using var dats = Write();
+        SetInflatedSize(dats.CellPath, inflated);
+        using var files = dats.Open();
+
+        var ex = Assert.Throws<DatReadException>(() => files.ReadCell<LandBlock>(Land));
+
+        Assert.Equal($"client_cell_1.dat 0x{Land:X8}: inflates to {inflated} bytes, more than the {DatFile.MaxObjectBytes} read.", ex.Message);
+    }
+
+    [Fact]
+    public void ACompressedObjectWithinTheCap_IsRead()
+    {
+        using var dats = Write();
+        using var files = dats.Open();
+        Assert.Equal(WorldWriter.Land(0xA9B4).Height, files.ReadCell<LandBlock>(Land).Height);
+    }
+
+    // A LandBlock written compressed (its heights repeat, so it compresses), checked to be stored so.
+    private static TempDats Write()
+    {
+        var dats = new TempDats();
+        using var dat = new DatDatabase(o => { o.FilePath = dats.CellPath; o.AccessType = DatAccessType.ReadWrite; });
+        var written = dat.TryWriteCompressed(WorldWriter.Land(0xA9B4));
+        Assert.True(written.Success, written.Error);
+        Assert.True(dat.Tree.TryGetFile(Land, out var entry) && entry.Flags.HasFlag(DatBTreeFileFlags.IsCompressed));
+        return dats;
+    }
+
+    // The object's first payload bytes follow its first block's 4-byte link to the next block.
+    private static void SetInflatedSize(string path, uint inflated)
+    {
+        int offset;
+        using (var dat = new DatDatabase(o => { o.FilePath = path; o.AccessType = DatAccessType.Read; }))
+        {
+            Assert.True(dat.Tree.TryGetFile(Land, out var entry));
+            offset = entry.Offset + 4;
+        }
+        using var stream = new FileStream(path, FileMode.Open, FileAccess.ReadWrite);
+        stream.Position = offset;
+        Span<byte> size = stackalloc byte[4];
+        System.Buffers.Binary.BinaryPrimitives.WriteUInt32LittleEndian(size, inflated);
+        stream.Write(size);
     }
 }
